@@ -1,0 +1,16 @@
+// The spt sub-commands. Each lives in its own cmd_<name>.cpp and gets argv after the command
+// name (argv[0] is the command name). They return the process exit code:
+// 0 success, 1 failure of the work (bad input file, ...), 2 bad command line.
+#pragma once
+
+namespace spt::cli {
+
+int cmd_info(int argc, char** argv);
+int cmd_verify(int argc, char** argv);
+int cmd_render(int argc, char** argv);
+int cmd_pack(int argc, char** argv);
+int cmd_paint(int argc, char** argv);
+int cmd_import(int argc, char** argv);
+int cmd_export(int argc, char** argv);
+
+}  // namespace spt::cli

@@ -1,0 +1,40 @@
+// Image reading and writing through OpenImageIO. Every image the converter reads or writes
+// goes through here.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "spt/render.hpp"
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+
+namespace spt::io {
+
+// An 8-bit sRGB RGB image: what the painter paints from.
+struct Image {
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgb;  // width * height * 3
+};
+
+struct ReadOptions {
+    // Alpha (when present) is composited over this colour.
+    Rgb8 background{255, 255, 255};
+};
+
+// Reads PNG, JPEG, TIFF, EXR, ... (anything OpenImageIO reads). 8/16-bit and float data are
+// converted to 8-bit sRGB: float files (EXR, float TIFF) are taken as scene-linear Rec.709 and
+// converted with OpenImageIO's colour management ("linear" -> "sRGB"). 1 channel is gray,
+// 2 gray + alpha, 3 RGB, 4 RGBA; more channels: the first 3 (or 4 when the 4th is alpha).
+// Errors name the file.
+Result<Image> read_image(const std::string& path, const ReadOptions& opts = {});
+
+// Writes by extension (.png, .exr, .tif, .jpg, ...). EXR is written as half float, linear
+// (the inverse of read_image's transform), so that render output composes in VFX tools.
+Status write_image(const std::string& path, uint32_t width, uint32_t height, const uint8_t* rgb);
+inline Status write_image(const std::string& path, const Canvas& c) {
+    return write_image(path, c.width, c.height, c.rgb.data());
+}
+
+}  // namespace spt::io

@@ -1,0 +1,61 @@
+// Reader: header, frame count, seek to any frame (through the index, or by scanning when the
+// index is missing), and the live stroke list of each frame.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spt/limits.hpp"
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+#include "spt/writer.hpp"
+
+namespace spt {
+
+struct FrameEntry {
+    uint32_t index = 0;
+    FrameType type = FrameType::Key;
+    Coding coding = Coding::Stored;
+    uint64_t offset = 0;        // of the FRAM chunk
+    uint64_t chunk_bytes = 0;   // whole chunk including framing
+    uint64_t stroke_bytes = 0;  // payload bytes coding added strokes
+    uint64_t motion_bytes = 0;  // payload bytes coding removals and motion
+    uint32_t added = 0, removed = 0;
+};
+
+struct ReaderOptions {
+    Limits limits;
+    bool verify_checksums = true;
+};
+
+class Reader {
+public:
+    static Result<std::unique_ptr<Reader>> open(const std::string& path, const ReaderOptions& opts = {});
+    // Reads from memory (fuzzing, tests). The buffer is copied.
+    static Result<std::unique_ptr<Reader>> open_memory(const uint8_t* data, size_t size,
+                                                       const ReaderOptions& opts = {});
+    virtual ~Reader();
+
+    virtual const StreamInfo& info() const = 0;
+    // Every complete frame found (from the index, or by scanning a file without one).
+    virtual const std::vector<FrameEntry>& frames() const = 0;
+    virtual bool has_index() const = 0;
+    // True when the end chunk was found and everything before it is sound.
+    virtual bool complete() const = 0;
+    // Problems found while opening that did not stop it (a truncated tail, a bad index).
+    virtual const std::vector<Error>& warnings() const = 0;
+
+    // Decodes one frame's stored record (no state applied).
+    virtual Result<Frame> read_frame(size_t frame_pos) = 0;
+    // The live stroke list after applying frames up to `frame_pos`, decoding from the nearest
+    // key frame at or before it. Sequential calls are incremental.
+    virtual Result<const std::vector<Stroke>*> strokes_at(size_t frame_pos) = 0;
+};
+
+// Applies one frame to a live stroke list (the normative state update of SPEC.md).
+Status apply_frame(std::vector<Stroke>& live, const Frame& frame, const Header& header,
+                   const Limits& limits = {});
+
+}  // namespace spt

@@ -1,0 +1,170 @@
+// libspt data model: the values a .spt file holds, independent of how they are coded.
+// See format/SPEC.md; field names here follow the spec's names.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace spt {
+
+// Fixed-point positions and lengths are in 1/16 pixel ("Q4"). Pixel (x, y) covers
+// [x, x+1) x [y, y+1); its centre is at (16x + 8, 16y + 8) in Q4.
+constexpr int kQ4 = 16;
+
+struct Rgb8 {
+    uint8_t r = 0, g = 0, b = 0;
+    friend bool operator==(const Rgb8&, const Rgb8&) = default;
+};
+
+struct Rgba8 {
+    uint8_t r = 0, g = 0, b = 0, a = 255;
+    friend bool operator==(const Rgba8&, const Rgba8&) = default;
+};
+
+// A stroke set: the size in pixels a stamp stroke of this set covers (before rotation).
+struct StrokeSet {
+    uint16_t width = 0;
+    uint16_t height = 0;
+    friend bool operator==(const StrokeSet&, const StrokeSet&) = default;
+};
+
+// One entry of the orientation table: cos and sin of the angle in Q14 (16384 = 1.0).
+struct Orientation {
+    int16_t cos_q14 = 16384;
+    int16_t sin_q14 = 0;
+    friend bool operator==(const Orientation&, const Orientation&) = default;
+};
+
+// Template shapes. Every stroke is the image of a template under an affine map.
+enum class TemplateKind : uint8_t {
+    Bitmap = 0,     // width x height 8-bit coverage samples, row-major, top row first
+    Ellipse = 1,    // unit disc u^2 + v^2 <= 1
+    Rectangle = 2,  // unit square |u| <= 1, |v| <= 1
+    Triangle = 3,   // u >= -1, v >= -1, u + v <= 0: vertices (-1,-1), (1,-1), (-1,1)
+};
+
+struct Template {
+    TemplateKind kind = TemplateKind::Bitmap;
+    uint16_t width = 0;    // Bitmap only
+    uint16_t height = 0;   // Bitmap only
+    std::vector<uint8_t> pixels;  // Bitmap only, width * height
+    std::string name;      // informative (e.g. "bristle"); may be empty
+    friend bool operator==(const Template&, const Template&) = default;
+};
+
+enum class StrokeKind : uint8_t { Stamp = 0, Affine = 1, Curve = 2 };
+
+// The paper's SPT stroke: a template of a stroke set at one of the table's orientations.
+struct StampStroke {
+    uint8_t set = 0;
+    uint8_t tmpl = 0;
+    uint8_t orient = 0;
+    int32_t x = 0, y = 0;  // Q4 centre; rendered centred on the pixel holding it
+    Rgba8 color;
+    friend bool operator==(const StampStroke&, const StampStroke&) = default;
+};
+
+// Any affine image of a template: template point (u, v) in [-1, 1]^2 maps to
+// (tx + u*a + v*b, ty + u*c + v*d), all in Q4 pixels.
+struct AffineStroke {
+    uint8_t tmpl = 0;
+    int32_t tx = 0, ty = 0;
+    int32_t a = 0, b = 0, c = 0, d = 0;
+    Rgba8 color;
+    friend bool operator==(const AffineStroke&, const AffineStroke&) = default;
+};
+
+struct CurvePoint {
+    int32_t x = 0, y = 0;  // Q4
+    uint32_t width = 0;    // Q4 full width (diameter) at this point
+    friend bool operator==(const CurvePoint&, const CurvePoint&) = default;
+};
+
+// A polyline with per-point width and one colour (hand-drawn or curved-stroke painters).
+struct CurveStroke {
+    Rgba8 color;
+    std::vector<CurvePoint> points;
+    friend bool operator==(const CurveStroke&, const CurveStroke&) = default;
+};
+
+struct Stroke {
+    StrokeKind kind = StrokeKind::Stamp;
+    StampStroke stamp;    // valid when kind == Stamp
+    AffineStroke affine;  // valid when kind == Affine
+    CurveStroke curve;    // valid when kind == Curve
+
+    static Stroke make_stamp(const StampStroke& s) { Stroke r; r.kind = StrokeKind::Stamp; r.stamp = s; return r; }
+    static Stroke make_affine(const AffineStroke& s) { Stroke r; r.kind = StrokeKind::Affine; r.affine = s; return r; }
+    static Stroke make_curve(CurveStroke s) { Stroke r; r.kind = StrokeKind::Curve; r.curve = std::move(s); return r; }
+    friend bool operator==(const Stroke& x, const Stroke& y) {
+        if (x.kind != y.kind) return false;
+        switch (x.kind) {
+            case StrokeKind::Stamp: return x.stamp == y.stamp;
+            case StrokeKind::Affine: return x.affine == y.affine;
+            case StrokeKind::Curve: return x.curve == y.curve;
+        }
+        return false;
+    }
+};
+
+// Block motion field: strokes move by the vector of the block holding their anchor.
+struct MotionField {
+    uint16_t block_size = 16;    // pixels
+    uint16_t cols = 0, rows = 0; // ceil(width / block_size), ceil(height / block_size)
+    std::vector<std::pair<int16_t, int16_t>> vectors;  // Q4 (dx, dy), row-major, cols*rows
+    bool empty() const { return vectors.empty(); }
+};
+
+enum class FrameType : uint8_t { Key = 0, Inter = 1 };
+
+// One frame as stored: a key frame replaces the live stroke list; an inter frame edits it.
+// Order of application for inter frames: remove, then move, then append `added`.
+struct Frame {
+    uint32_t index = 0;
+    FrameType type = FrameType::Key;
+    std::vector<uint32_t> removed;  // inter: indices into the previous list, strictly increasing
+    MotionField motion;             // inter: optional
+    std::vector<Stroke> added;      // key: the whole list; inter: appended on top
+};
+
+struct Rational {
+    uint32_t num = 24, den = 1;
+    friend bool operator==(const Rational&, const Rational&) = default;
+};
+
+enum class ColorEncoding : uint8_t { Srgb8 = 0 };
+
+constexpr uint32_t kUnknownFrameCount = 0xFFFFFFFFu;
+
+struct Header {
+    uint16_t version_major = 1;
+    uint16_t version_minor = 0;
+    uint32_t width = 0, height = 0;
+    Rational fps;
+    uint32_t frame_count = kUnknownFrameCount;  // may be unknown while streaming
+    ColorEncoding color = ColorEncoding::Srgb8;
+    Rgb8 background{255, 255, 255};
+    std::vector<StrokeSet> sets;             // coarse to fine
+    std::vector<Orientation> orientations;   // default: 8 entries, k*pi/8
+    friend bool operator==(const Header&, const Header&) = default;
+};
+
+struct Roi {
+    uint32_t first_frame = 0, last_frame = 0;  // inclusive
+    uint32_t x = 0, y = 0, w = 0, h = 0;
+};
+
+// Everything a file holds besides its frames.
+struct StreamInfo {
+    Header header;
+    std::vector<Template> templates;
+    std::vector<std::pair<std::string, std::string>> metadata;  // UTF-8 key/value
+    std::vector<Roi> rois;
+};
+
+// The default orientation table: n entries at k*pi/n (strokes are symmetric under pi).
+std::vector<Orientation> default_orientations(int n = 8);
+
+}  // namespace spt
