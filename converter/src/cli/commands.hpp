@@ -12,5 +12,6 @@ int cmd_pack(int argc, char** argv);
 int cmd_paint(int argc, char** argv);
 int cmd_import(int argc, char** argv);
 int cmd_export(int argc, char** argv);
+int cmd_compare(int argc, char** argv);
 
 }  // namespace spt::cli
