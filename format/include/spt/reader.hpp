@@ -52,6 +52,10 @@ public:
     // The live stroke list after applying frames up to `frame_pos`, decoding from the nearest
     // key frame at or before it. Sequential calls are incremental.
     virtual Result<const std::vector<Stroke>*> strokes_at(size_t frame_pos) = 0;
+    // Decodes one frame and reports where its body's bits go, per field.
+    virtual Result<FieldStats> field_stats(size_t frame_pos) = 0;
+    // Size of the file or buffer in bytes.
+    virtual uint64_t file_size() const = 0;
 };
 
 // Applies one frame to a live stroke list (the normative state update of SPEC.md).

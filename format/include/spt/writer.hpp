@@ -20,6 +20,36 @@ struct WriterOptions {
     // Write to "<path>.partial" and rename to <path> in finish(), so that the final name never
     // holds a half-written file. abort() removes the partial file.
     bool atomic_rename = true;
+    // Bitmap templates: Range codes their samples (TMPL coding 1) when `coding` is Range too;
+    // Stored writes raw samples. Stored-coded files always get raw templates.
+    Coding template_coding = Coding::Range;
+};
+
+// Where the bits of frame bodies go, per field (for `spt info` and benches). Stored coding
+// counts exact bytes; range coding counts the information cost -log2(p) of every coded
+// decision of the field, which sums to the stream size within a few bytes per frame.
+enum class Field : uint8_t {
+    Count = 0,    // frame-level counts and sizes (stroke/removal counts, stream lengths)
+    Kind,         // stroke kind
+    SetTemplate,  // stamp set, template of any stroke
+    Orientation,  // stamp orientation
+    Position,     // stamp/affine anchor, first curve point
+    Color,        // R, G, B
+    Alpha,        // A
+    Geometry,     // affine matrix, curve point count, further curve points, widths
+    Removal,      // removed stroke indices
+    Motion,       // motion field
+};
+constexpr size_t kFieldCount = 10;
+const char* field_name(Field f);
+
+struct FieldStats {
+    double bits[kFieldCount] = {};
+    double& operator[](Field f) { return bits[size_t(f)]; }
+    double operator[](Field f) const { return bits[size_t(f)]; }
+    double bytes(Field f) const { return bits[size_t(f)] / 8.0; }
+    double total_bits() const { double t = 0; for (double b : bits) t += b; return t; }
+    void add(const FieldStats& o) { for (size_t i = 0; i < kFieldCount; ++i) bits[i] += o.bits[i]; }
 };
 
 // Per-section byte counts, for `spt info` and benches.
@@ -31,6 +61,7 @@ struct WriteStats {
     uint64_t motion_bytes = 0;     // motion and removal payload inside FRAM chunks
     uint64_t index_bytes = 0;
     uint64_t frames = 0, key_frames = 0, strokes = 0;
+    FieldStats fields;             // summed over all frame bodies
 };
 
 class Writer {

@@ -1,0 +1,66 @@
+// Internal: frame body coders (SPEC.md 6 and 7). Also the entry points of the fuzz targets.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "spt/limits.hpp"
+#include "spt/reader.hpp"
+#include "spt/types.hpp"
+#include "spt/writer.hpp"
+#include "validate.hpp"
+
+namespace spt::detail {
+
+// How a body splits into stroke bytes and edit (removal + motion) bytes.
+struct BodySplit {
+    uint64_t stroke_bytes = 0;
+    uint64_t motion_bytes = 0;
+    uint32_t added = 0, removed = 0;
+};
+
+struct DecodeContext {
+    StreamShape shape;
+    Limits limits;
+    uint64_t prev_live = 0;   // live list length before an inter frame
+    uint64_t offset = 0;      // file offset of the body, for messages
+    std::string where = "frame";  // e.g. "frame 12 (FRAM at byte offset 3456)"
+    FieldStats* stats = nullptr;
+};
+
+// Encodes a validated frame's body. `stats` (optional) receives per-field accounting.
+void encode_frame_body(const Frame& f, Coding coding, const StreamShape& shape,
+                       std::vector<uint8_t>& out, BodySplit* split, FieldStats* stats);
+// Decodes and validates a body. The frame's index and type are set by the caller.
+Status decode_frame_body(FrameType type, Coding coding, const uint8_t* p, size_t n,
+                         const DecodeContext& ctx, Frame& out, BodySplit* split);
+
+// Reads `n` bytes at `rel` bytes into a body; false when they are not there.
+using BodyPeek = std::function<bool(uint64_t rel, size_t n, uint8_t* dst)>;
+// Splits a body into stroke and edit bytes by reading only its counts (for frame tables).
+Status measure_frame_body(FrameType type, Coding coding, uint64_t body_size, const BodyPeek& peek,
+                          const DecodeContext& ctx, BodySplit& split);
+
+// Coding 0.
+void encode_stored_body(const Frame& f, std::vector<uint8_t>& out, BodySplit* split, FieldStats* stats);
+Status decode_stored_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
+                          BodySplit* split);
+Status measure_stored_body(FrameType type, uint64_t body_size, const BodyPeek& peek, const DecodeContext& ctx,
+                           BodySplit& split);
+
+// Coding 1.
+void encode_range_body(const Frame& f, const StreamShape& shape, std::vector<uint8_t>& out, BodySplit* split,
+                       FieldStats* stats);
+Status decode_range_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
+                         BodySplit* split);
+Status measure_range_body(FrameType type, uint64_t body_size, const BodyPeek& peek, const DecodeContext& ctx,
+                          BodySplit& split);
+// The two range-coded streams of a coding-1 body on their own (fuzz targets, tests).
+Status decode_stroke_stream(const uint8_t* p, size_t n, uint32_t count, const DecodeContext& ctx,
+                            std::vector<Stroke>& out);
+Status decode_edit_stream(const uint8_t* p, size_t n, uint32_t removed_count, bool motion, uint16_t block_size,
+                          const DecodeContext& ctx, Frame& out);
+
+}  // namespace spt::detail

@@ -1,0 +1,317 @@
+// Internal: the coding-1 syntax of strokes and edits (SPEC.md 7.4, 7.5), written once for both
+// directions. `C` is RangeEncoder (codes the values it is given) or RangeDecoder (ignores them
+// and returns decoded values); every function assigns what it coded back into its output.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "range_coder.hpp"
+#include "spt/limits.hpp"
+#include "spt/types.hpp"
+#include "validate.hpp"
+
+namespace spt::detail {
+
+constexpr int kColorCellShift = 3;  // colour prediction cells are 8x8 pixels
+
+// Position of one axis (SPEC.md 7.4.3).
+struct PosModel {
+    uint16_t inside = kProbInit;
+    BitTree pix;
+    SIntModel outside;
+    uint16_t frac8 = kProbInit;
+    uint16_t frac[16];
+    void reset(uint32_t extent) {
+        inside = frac8 = kProbInit;
+        pix.reset(bit_length(extent - 1));
+        outside = SIntModel();
+        for (auto& q : frac) q = kProbInit;
+    }
+};
+
+// Every context of the stroke stream and the state it predicts from; reset per frame body.
+struct StrokeCoderState {
+    StreamShape shape;
+    // contexts
+    uint16_t kind0[3], kind1[3];
+    uint16_t same_set;
+    BitTree set_tree;
+    std::array<BitTree, 16> tmpl;     // stamp template, by set
+    BitTree affine_tmpl;
+    uint16_t same_orient[16];
+    std::array<BitTree, 16> orient;   // by set
+    PosModel pos[3][2];               // [stamp, affine, curve][x, y]
+    Res8Model color[3][4];            // [G, R-G, B-G][class]
+    uint16_t opaque;
+    BitTree alpha;
+    SIntModel matrix[4];
+    UIntModel points;
+    SIntModel width0, dx, dy, dw;
+    // predictors
+    int prev_kind = 0;
+    int prev_set = 0;
+    int prev_orient[16] = {};
+    Rgb8 prev_color{128, 128, 128};
+    int32_t prev_matrix[4] = {0, 0, 0, 0};
+    int64_t prev_width0 = 0;
+    uint32_t grid_w = 0, grid_h = 0;
+    std::vector<uint32_t> grid;       // 0 = empty, else 0x01RRGGBB
+
+    explicit StrokeCoderState(const StreamShape& sh) : shape(sh) {
+        for (int i = 0; i < 3; ++i) kind0[i] = kind1[i] = kProbInit;
+        same_set = opaque = kProbInit;
+        set_tree.reset(4);
+        const int tb = sh.templates ? bit_length(sh.templates - 1) : 0;
+        const int ob = sh.orientations ? bit_length(sh.orientations - 1) : 0;
+        for (auto& t : tmpl) t.reset(tb);
+        affine_tmpl.reset(tb);
+        for (auto& q : same_orient) q = kProbInit;
+        for (auto& t : orient) t.reset(ob);
+        for (auto& g : pos) { g[0].reset(sh.width); g[1].reset(sh.height); }
+        alpha.reset(8);
+        grid_w = (sh.width + 7) >> kColorCellShift;
+        grid_h = (sh.height + 7) >> kColorCellShift;
+    }
+
+    size_t cell(int32_t x, int32_t y) const {
+        const int64_t cx = std::clamp<int64_t>((int64_t(x) >> 4) >> kColorCellShift, 0, int64_t(grid_w) - 1);
+        const int64_t cy = std::clamp<int64_t>((int64_t(y) >> 4) >> kColorCellShift, 0, int64_t(grid_h) - 1);
+        return size_t(cy) * grid_w + size_t(cx);
+    }
+    Rgb8 predict(int32_t x, int32_t y) {
+        if (grid.empty()) grid.assign(size_t(grid_w) * grid_h, 0);
+        const uint32_t g = grid[cell(x, y)];
+        if (!g) return prev_color;
+        return Rgb8{uint8_t(g >> 16), uint8_t(g >> 8), uint8_t(g)};
+    }
+    void update(int32_t x, int32_t y, const Rgba8& c) {
+        grid[cell(x, y)] = 0x01000000u | (uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b;
+        prev_color = Rgb8{c.r, c.g, c.b};
+    }
+};
+
+// A coded value that the decoder found invalid: its message (the caller adds where).
+struct SyntaxError {
+    bool bad = false;
+    std::string msg;
+    void set(std::string m) { if (!bad) { bad = true; msg = std::move(m); } }
+};
+
+template <class C>
+int64_t code_position(C& c, PosModel& m, int32_t v, uint32_t extent, SyntaxError& err) {
+    int64_t p = int64_t(v) >> 4;
+    uint32_t f = uint32_t(v) & 15;
+    const bool outside = c.bit(m.inside, (p >= 0 && p < int64_t(extent)) ? 0 : 1);
+    if (!outside) {
+        p = code_tree(c, m.pix, uint32_t(p));
+        if (p >= int64_t(extent)) err.set("position " + std::to_string(p) + " coded inside is not below " + std::to_string(extent));
+    } else {
+        p = code_sint(c, m.outside, p);
+        if (p >= 0 && p < int64_t(extent)) err.set("position " + std::to_string(p) + " coded outside lies inside the canvas");
+    }
+    if (!c.bit(m.frac8, f != 8 ? 1 : 0)) {
+        f = 8;
+    } else {
+        f = code_tree(c, m.frac, 4, f);
+        if (f == 8) err.set("fraction 8 coded without its flag");
+    }
+    const int64_t q = p * 16 + int64_t(f);
+    if (q < -kMaxCoord || q > kMaxCoord) err.set("position " + std::to_string(q) + " is outside +-2^24");
+    return q;
+}
+
+template <class C>
+void code_color(C& c, StrokeCoderState& st, Rgba8& col, int32_t ax, int32_t ay, int cls, SyntaxError& err) {
+    c.set_field(Field::Color);
+    const Rgb8 p = st.predict(ax, ay);
+    const int pg = p.g, pr = p.r - p.g, pb = p.b - p.g;
+    const int g = code_res8(c, st.color[0][cls], wrap8(col.g - pg));
+    const int gv = (pg + g) & 255;
+    const int r = code_res8(c, st.color[1][cls], wrap8(col.r - gv - pr));
+    const int b = code_res8(c, st.color[2][cls], wrap8(col.b - gv - pb));
+    if (g > 127 || r > 127 || b > 127) err.set("colour residual +128");
+    col.g = uint8_t(gv);
+    col.r = uint8_t((gv + pr + r) & 255);
+    col.b = uint8_t((gv + pb + b) & 255);
+    c.set_field(Field::Alpha);
+    if (!c.bit(st.opaque, col.a != 255 ? 1 : 0)) {
+        col.a = 255;
+    } else {
+        col.a = uint8_t(code_tree(c, st.alpha, col.a));
+        if (col.a == 255) err.set("alpha 255 coded without its flag");
+    }
+    st.update(ax, ay, col);
+}
+
+// One stroke (SPEC.md 7.4.2). Returns false and fills `err` on an invalid coded value.
+template <class C>
+bool code_stroke(C& c, StrokeCoderState& st, Stroke& s, const Limits& lim, SyntaxError& err) {
+    const StreamShape& sh = st.shape;
+    c.set_field(Field::Kind);
+    int kind = 0;
+    if (c.bit(st.kind0[st.prev_kind], s.kind != StrokeKind::Stamp ? 1 : 0))
+        kind = c.bit(st.kind1[st.prev_kind], s.kind == StrokeKind::Curve ? 1 : 0) ? 2 : 1;
+    st.prev_kind = kind;
+    s.kind = StrokeKind(kind);
+
+    if (kind == 0) {
+        auto& t = s.stamp;
+        c.set_field(Field::SetTemplate);
+        int set = st.prev_set;
+        if (sh.sets > 1 && c.bit(st.same_set, t.set != st.prev_set ? 1 : 0)) {
+            set = int(code_tree(c, st.set_tree, t.set));
+            if (set == st.prev_set || uint32_t(set) >= sh.sets) {
+                err.set("stamp set " + std::to_string(set) + " is invalid");
+                return false;
+            }
+        }
+        t.set = uint8_t(set);
+        st.prev_set = set;
+        if (sh.templates == 0) { err.set("stamp stroke in a file without templates"); return false; }
+        t.tmpl = uint8_t(code_tree(c, st.tmpl[set], t.tmpl));
+        if (t.tmpl >= sh.templates) { err.set("template " + std::to_string(t.tmpl) + " is not below the template count"); return false; }
+        c.set_field(Field::Orientation);
+        int o = st.prev_orient[set];
+        if (sh.orientations > 1 && c.bit(st.same_orient[set], t.orient != o ? 1 : 0)) {
+            const int v = int(code_tree(c, st.orient[set], t.orient));
+            if (v == o || uint32_t(v) >= sh.orientations) { err.set("orientation " + std::to_string(v) + " is invalid"); return false; }
+            o = v;
+        }
+        t.orient = uint8_t(o);
+        st.prev_orient[set] = o;
+        c.set_field(Field::Position);
+        t.x = int32_t(code_position(c, st.pos[0][0], t.x, sh.width, err));
+        t.y = int32_t(code_position(c, st.pos[0][1], t.y, sh.height, err));
+        if (err.bad) return false;
+        code_color(c, st, t.color, t.x, t.y, std::min(set, 3), err);
+        return !err.bad;
+    }
+    if (kind == 1) {
+        auto& t = s.affine;
+        c.set_field(Field::SetTemplate);
+        if (sh.templates == 0) { err.set("affine stroke in a file without templates"); return false; }
+        t.tmpl = uint8_t(code_tree(c, st.affine_tmpl, t.tmpl));
+        if (t.tmpl >= sh.templates) { err.set("template " + std::to_string(t.tmpl) + " is not below the template count"); return false; }
+        c.set_field(Field::Position);
+        t.tx = int32_t(code_position(c, st.pos[1][0], t.tx, sh.width, err));
+        t.ty = int32_t(code_position(c, st.pos[1][1], t.ty, sh.height, err));
+        if (err.bad) return false;
+        c.set_field(Field::Geometry);
+        int32_t* m[4] = {&t.a, &t.b, &t.c, &t.d};
+        for (int i = 0; i < 4; ++i) {
+            const int64_t v = code_sint(c, st.matrix[i], int64_t(*m[i]) - st.prev_matrix[i]) + st.prev_matrix[i];
+            if (v < -kMaxMatrix || v > kMaxMatrix) { err.set("affine matrix entry outside +-2^16"); return false; }
+            *m[i] = int32_t(v);
+            st.prev_matrix[i] = int32_t(v);
+        }
+        if (int64_t(t.a) * t.d - int64_t(t.b) * t.c == 0) { err.set("affine matrix is singular"); return false; }
+        code_color(c, st, t.color, t.tx, t.ty, 0, err);
+        return !err.bad;
+    }
+    auto& cv = s.curve;
+    c.set_field(Field::Geometry);
+    const uint64_t n = code_uint(c, st.points, cv.points.empty() ? 0 : cv.points.size() - 1) + 1;
+    if (n > lim.max_curve_points) { err.set("curve of " + std::to_string(n) + " points exceeds the limit"); return false; }
+    cv.points.resize(size_t(n));  // the encoder's size already; the decoder's new
+    auto& p0 = cv.points[0];
+    c.set_field(Field::Position);
+    p0.x = int32_t(code_position(c, st.pos[2][0], p0.x, sh.width, err));
+    p0.y = int32_t(code_position(c, st.pos[2][1], p0.y, sh.height, err));
+    if (err.bad) return false;
+    c.set_field(Field::Geometry);
+    const int64_t w0 = code_sint(c, st.width0, int64_t(p0.width) - st.prev_width0) + st.prev_width0;
+    if (w0 < 0 || w0 > kMaxWidthQ4) { err.set("curve width outside 0..2^16"); return false; }
+    p0.width = uint32_t(w0);
+    st.prev_width0 = w0;
+    for (size_t i = 1; i < cv.points.size(); ++i) {
+        const auto& a = cv.points[i - 1];
+        auto& b = cv.points[i];
+        const int64_t x = a.x + code_sint(c, st.dx, int64_t(b.x) - a.x);
+        const int64_t y = a.y + code_sint(c, st.dy, int64_t(b.y) - a.y);
+        const int64_t w = int64_t(a.width) + code_sint(c, st.dw, int64_t(b.width) - int64_t(a.width));
+        if (x < -kMaxCoord || x > kMaxCoord || y < -kMaxCoord || y > kMaxCoord) { err.set("curve point outside +-2^24"); return false; }
+        if (w < 0 || w > kMaxWidthQ4) { err.set("curve width outside 0..2^16"); return false; }
+        b.x = int32_t(x); b.y = int32_t(y); b.width = uint32_t(w);
+    }
+    code_color(c, st, cv.color, p0.x, p0.y, 0, err);
+    return !err.bad;
+}
+
+// The edit stream (SPEC.md 7.5): removal gaps, then the motion field.
+struct EditCoderState {
+    UIntModel gap, run;
+    SIntModel mvx, mvy;
+};
+
+inline std::pair<int32_t, int32_t> motion_prediction(const std::vector<std::pair<int16_t, int16_t>>& v,
+                                                     size_t i, uint32_t cols) {
+    const size_t c = i % cols, r = i / cols;
+    auto at = [&](size_t cc, size_t rr) { return v[rr * cols + cc]; };
+    if (r == 0) {
+        if (c == 0) return {0, 0};
+        return {at(c - 1, 0).first, at(c - 1, 0).second};
+    }
+    const auto t = at(c, r - 1);
+    const auto l = c > 0 ? at(c - 1, r) : t;
+    const auto tr = c + 1 < cols ? at(c + 1, r - 1) : t;
+    auto med = [](int32_t a, int32_t b, int32_t d) { return std::max(std::min(a, b), std::min(std::max(a, b), d)); };
+    return {med(l.first, t.first, tr.first), med(l.second, t.second, tr.second)};
+}
+
+template <class C>
+bool code_edits(C& c, EditCoderState& st, Frame& f, uint32_t removed_count, uint64_t prev_live, SyntaxError& err) {
+    c.set_field(Field::Removal);
+    // The decoder grows the list as indices decode: a count is only a claim until then.
+    if constexpr (C::kDecoding) f.removed.reserve(std::min<uint32_t>(removed_count, 1u << 16));
+    int64_t prev = -1;
+    for (uint32_t i = 0; i < removed_count; ++i) {
+        const int64_t given = C::kDecoding ? prev + 1 : int64_t(f.removed[i]);
+        const uint64_t gap = code_uint(c, st.gap, uint64_t(given - prev - 1));
+        const int64_t v = prev + 1 + int64_t(gap);
+        if (uint64_t(v) >= prev_live || v > 0xFFFFFFFFll) {
+            err.set("removed index " + std::to_string(v) + " is not below the live count " + std::to_string(prev_live));
+            return false;
+        }
+        if constexpr (C::kDecoding) f.removed.push_back(uint32_t(v));
+        prev = v;
+    }
+    auto& m = f.motion;
+    if (m.vectors.empty()) return true;
+    c.set_field(Field::Motion);
+    const size_t total = m.vectors.size();
+    size_t i = 0;
+    while (i < total) {
+        // Length of the run of blocks whose vector equals its prediction (encoder side).
+        uint64_t run = 0;
+        if constexpr (!C::kDecoding) {
+            size_t j = i;
+            while (j < total) {
+                const auto p = motion_prediction(m.vectors, j, m.cols);
+                if (p.first != m.vectors[j].first || p.second != m.vectors[j].second) break;
+                ++j;
+            }
+            run = j - i;
+        }
+        run = code_uint(c, st.run, run);
+        if (run > total - i) { err.set("motion run of " + std::to_string(run) + " blocks passes the field's end"); return false; }
+        for (uint64_t k = 0; k < run; ++k, ++i) {
+            const auto p = motion_prediction(m.vectors, i, m.cols);
+            m.vectors[i] = {int16_t(p.first), int16_t(p.second)};
+        }
+        if (i == total) break;
+        const auto p = motion_prediction(m.vectors, i, m.cols);
+        const int64_t rx = code_sint(c, st.mvx, int64_t(m.vectors[i].first) - p.first);
+        const int64_t ry = code_sint(c, st.mvy, int64_t(m.vectors[i].second) - p.second);
+        if (rx == 0 && ry == 0) { err.set("zero motion residual outside a run"); return false; }
+        const int64_t x = p.first + rx, y = p.second + ry;
+        if (x < -32768 || x > 32767 || y < -32768 || y > 32767) { err.set("motion vector outside i16"); return false; }
+        m.vectors[i] = {int16_t(x), int16_t(y)};
+        ++i;
+    }
+    return true;
+}
+
+}  // namespace spt::detail

@@ -1,0 +1,174 @@
+// Internal to libspt: the integer rasterisation rules of SPEC.md section 8 (draft text in
+// format/SPEC.md section 8). Every function here is exact integer arithmetic; the
+// comments name the spec paragraph each one implements.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "spt/types.hpp"
+
+namespace spt::raster {
+
+// Template coordinates are Q16: 65536 = 1.0 (SPEC 8.3).
+constexpr int64_t kOne = 65536;
+
+// Largest canvas side the renderer accepts: Q4 pixel centres stay below 2^24, which keeps
+// every product of section 8 inside int64 (SPEC 8.1).
+constexpr uint32_t kMaxCanvasSide = 1u << 20;
+
+// floor(n / d) for d > 0 (C++ '/' truncates toward zero).
+inline int64_t floor_div(int64_t n, int64_t d) {
+    int64_t q = n / d;
+    if ((n % d != 0) && ((n < 0) != (d < 0))) --q;
+    return q;
+}
+
+// x / 255 for 0 <= x <= 65152 (= 255*255 + 127) without a division. Exact on that range;
+// tests/format/render_math_test.cpp checks every input.
+inline uint32_t div255(uint32_t x) { return (x + 1u + (x >> 8)) >> 8; }
+
+// alpha = (coverage * A + 127) / 255 (SPEC 8.6).
+inline uint32_t stroke_alpha(uint32_t coverage, uint32_t a) { return div255(coverage * a + 127u); }
+
+// Coverage 0..255 of template `t` at template point (U, V), Q16 (SPEC 8.4).
+uint8_t template_coverage(const Template& t, int64_t U, int64_t V);
+
+// A linear function of the pixel position divided by a positive denominator:
+//   value(x, y) = floor((ax * x + ay * y + c) / den)
+// Stamps and affine strokes both map pixel centres back to template space this way.
+struct LinearMap {
+    int64_t ax = 0, ay = 0, c = 0, den = 1;
+    int64_t at(int64_t x, int64_t y) const { return floor_div(ax * x + ay * y + c, den); }
+};
+
+// Walks value(x, y), value(x+1, y), ... exactly without dividing per pixel: keeps
+// numerator = q * den + r with 0 <= r < den.
+class LinearWalker {
+public:
+    LinearWalker(const LinearMap& m, int64_t x, int64_t y) : den_(m.den) {
+        const int64_t n = m.ax * x + m.ay * y + m.c;
+        q_ = floor_div(n, den_);
+        r_ = n - q_ * den_;
+        step_q_ = floor_div(m.ax, den_);
+        step_r_ = m.ax - step_q_ * den_;
+    }
+    int64_t value() const { return q_; }
+    void next() {
+        q_ += step_q_;
+        r_ += step_r_;
+        if (r_ >= den_) { r_ -= den_; ++q_; }
+    }
+private:
+    int64_t den_, q_, r_, step_q_, step_r_;
+};
+
+// The inverse map of one stamp or affine stroke and the pixel box it is evaluated on.
+struct InverseMap {
+    LinearMap u, v;                    // pixel (x, y) -> template (U, V), Q16
+    int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // inclusive pixel box; empty when x1 < x0
+};
+
+// SPEC 8.3: stamp of set size (w, h) at orientation (cos, sin) Q14, centred on pixel (0, 0).
+InverseMap stamp_inverse(uint32_t w, uint32_t h, Orientation o);
+// SPEC 8.2: affine stroke; returns false for a singular matrix (draws nothing).
+bool affine_inverse(const AffineStroke& s, InverseMap& out);
+
+// Coverage of the map over the pixel rows [y0, y1] and columns [x0, x1] (already clipped by
+// the caller to a sub-box of m's box): row-major into `out` (size (x1-x0+1)*(y1-y0+1)).
+void rasterize_map(const InverseMap& m, const Template& t, int64_t x0, int64_t y0, int64_t x1,
+                   int64_t y1, uint8_t* out);
+// The columns of row y where |U| <= 65536 and |V| <= 65536, intersected with [x0, x1]: every
+// template kind has coverage 0 outside that square (SPEC 8.4), so only these columns need
+// evaluating. Exact (solves the floor divisions for x); false when the range is empty.
+bool map_row_range(const InverseMap& m, int64_t y, int64_t& x0, int64_t& x1);
+// One row of rasterize_map restricted to [x0, x1] (inside map_row_range), with the template
+// kind dispatched once per row instead of per pixel.
+void rasterize_map_row(const InverseMap& m, const Template& t, int64_t y, int64_t x0, int64_t x1,
+                       uint8_t* out);
+// The inverse map of a stamp whose centre pixel is (cx, cy), in canvas coordinates.
+InverseMap stamp_inverse_at(uint32_t w, uint32_t h, Orientation o, int64_t cx, int64_t cy);
+
+// SPEC 8.5: coverage (0 or 255) of a curve over the pixel box [x0, x1] x [y0, y1], row-major
+// into `out` (zeroed by the callee). Pixels of the box outside the curve get 0.
+void rasterize_curve(const CurveStroke& s, int64_t x0, int64_t y0, int64_t x1, int64_t y1,
+                     uint8_t* out);
+// Conservative pixel box of a curve (every covered pixel is inside it).
+void curve_box(const CurveStroke& s, int64_t& x0, int64_t& y0, int64_t& x1, int64_t& y1);
+
+// SPEC 8.6 compositing of rows of a coverage mask. Mask row j, columns
+// [max(lo[j], clip_lo), min(hi[j], clip_hi)), blend onto canvas row dst + j * dst_stride at
+// canvas columns x_offset + column, with the coverage at cov3 + j * cov_stride (three bytes a pixel, one per channel), colour
+// pattern3 (r, g, b repeated from column 0 of the span) and colour alpha a.
+struct RowBatch {
+    uint8_t* dst = nullptr;          // canvas row of mask row 0 (its first byte)
+    int32_t x_offset = 0;            // canvas column of mask column 0
+    size_t dst_stride = 0;           // bytes
+    const uint8_t* cov3 = nullptr;   // coverage of column 0 of row 0
+    size_t cov_stride = 0;           // bytes
+    const uint8_t* pattern3 = nullptr;
+    const uint16_t* lo = nullptr;    // per-row span [lo, hi) of non-zero coverage
+    const uint16_t* hi = nullptr;
+    uint32_t rows = 0;
+    int32_t clip_lo = 0, clip_hi = 0;  // mask columns inside the canvas
+    uint32_t a = 255;
+};
+// A coverage mask stored as one span of non-zero columns per row, three bytes a pixel (one
+// per channel), every span followed by kSpanPad zero bytes so that a short span may be
+// blended with one vector that runs past its end (where coverage 0 leaves pixels
+// unchanged). Stamp footprints are kept this way: no zero runs at row ends are stored or
+// visited.
+constexpr uint32_t kSpanPad = 32;
+struct SpanRow {
+    int32_t lo = 0;    // first column of the span, relative to SpanMask::x0
+    uint32_t n = 0;    // pixels; 0: empty row
+    uint32_t off = 0;  // byte offset of the span's coverage in SpanMask::cov3
+};
+struct SpanMask {
+    int32_t x0 = 0, y0 = 0;     // offset of column 0 / row 0 (from the stamp's centre pixel)
+    uint32_t w = 0;             // columns: every span lies in [0, w)
+    std::vector<SpanRow> rows;  // row j is y0 + j
+    std::vector<uint8_t> cov3;
+    size_t bytes() const { return rows.size() * sizeof(SpanRow) + cov3.size(); }
+};
+// Appends one row to a SpanMask from one byte of coverage a pixel (n pixels, column 0 at
+// mask column `first`): trims zero ends, stores the span with its padding.
+void span_mask_add_row(SpanMask& m, const uint8_t* cov, int64_t n, int64_t first);
+
+// Where spans are composited: canvas pixels [x0, x1) x [y0, y1) stored at px (pixel (x0, y0))
+// with `stride` bytes a row. `slack`: every row has kSpanPad writable bytes past column x1
+// that nobody else reads (a tile buffer), which lets short spans run past their end; without
+// it (a caller's canvas, possibly shared by threads drawing disjoint regions) nothing outside
+// the written spans is touched.
+struct BlendTarget {
+    uint8_t* px = nullptr;
+    size_t stride = 0;
+    int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool slack = false;
+};
+// A SpanMask placed on the canvas for one stroke: what the tile loop keeps per binned stroke,
+// so that it reads one small record rather than chasing pointers.
+struct PlacedSpans {
+    const SpanRow* rows = nullptr;
+    const uint8_t* cov3 = nullptr;
+    int32_t ox = 0, oy = 0;  // canvas position of column 0 / row 0
+    uint32_t h = 0;          // rows
+    Rgba8 c;
+};
+// Composites p (SPEC 8.6), clipped to t.
+void blend_spans(const BlendTarget& t, const PlacedSpans& p);
+// Composites mask m with its column 0 / row 0 at canvas (ox, oy), clipped to t.
+void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy, Rgba8 c);
+// Composites one row of one-byte coverage: n pixels starting at canvas (x, y), clipped to t.
+void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c);
+
+enum class BlendIsa { Best, Scalar, Sse2, Avx2 };
+// Test hook: forces the span kernels of blend_spans/blend_cov_row onto one ISA (Best: the
+// fastest available). Not thread-safe; tests only.
+void force_span_isa(BlendIsa isa);
+bool blend_isa_available(BlendIsa isa);
+void blend_rows(const RowBatch& b, BlendIsa isa = BlendIsa::Best);
+// One row of n pixels, all of them in the canvas.
+void blend_row3(uint8_t* dst, const uint8_t* cov3, const uint8_t* pattern3, uint32_t n, uint32_t a);
+
+}  // namespace spt::raster

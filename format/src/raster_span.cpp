@@ -1,0 +1,296 @@
+// SPEC 8.6 compositing of span masks (raster.hpp: SpanMask, blend_spans), the hot loop of
+// whole-frame rendering. Same rule as raster_blend.cpp, in 16-bit lanes:
+//   alpha = (c * A + 127) / 255,  dst' = (dst * (255 - alpha) + src * alpha + 127) / 255
+// with x / 255 computed as mulhi_epu16(x, 0x8081) >> 7, i.e. (x * 32897) >> 23, which equals
+// x / 255 for every x <= 65152 (= 255 * 255 + 127, the largest value here; checked for every
+// input in tests/format/render_math_test.cpp). Two instructions instead of four.
+//
+// Span lengths (bytes = 3 * pixels), AVX2:
+//   <= 32     one 16- or 32-byte vector when the target has slack (it may run past the span:
+//             the mask's zero padding leaves those pixels unchanged, or they are in the
+//             slack); otherwise byte by byte under 16, and two 16-byte vectors at both ends
+//             (both computed before either is stored) from 16 to 32.
+//   > 32      32-byte vectors, the last one ending exactly at the span's end and computed
+//             before the loop overwrites the overlap.
+// The SSE2 kernel is the same with 16-byte vectors.
+// The colour is a 96-byte r, g, b pattern: a vector at byte offset k of a span reads it from
+// offset k % 3.
+#include <algorithm>
+#include <cstring>
+
+#include "raster.hpp"
+
+#if defined(__x86_64__) || defined(_M_X64)
+#include <immintrin.h>
+#define SPT_SPAN_X86 1
+#endif
+
+namespace spt::raster {
+namespace {
+
+BlendIsa g_forced = BlendIsa::Best;
+
+inline uint8_t blend_byte(uint8_t d, uint8_t c, uint8_t p, uint32_t a) {
+    const uint32_t al = a == 255 ? c : div255(c * a + 127u);
+    return uint8_t(div255(d * (255u - al) + p * al + 127u));
+}
+
+void span_scalar(uint8_t* dst, const uint8_t* cov, const uint8_t* pat, uint32_t bytes, uint32_t a, bool) {
+    for (uint32_t k = 0; k < bytes; ++k) dst[k] = blend_byte(dst[k], cov[k], pat[k % 3], a);
+}
+
+#ifdef SPT_SPAN_X86
+
+template <bool Opaque>
+inline __m128i lanes8(__m128i d, __m128i c, __m128i p, __m128i a) {
+    const __m128i k127 = _mm_set1_epi16(127), k255 = _mm_set1_epi16(255), m = _mm_set1_epi16(int16_t(0x8081));
+    __m128i al = c;
+    if (!Opaque) al = _mm_srli_epi16(_mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(c, a), k127), m), 7);
+    const __m128i v = _mm_add_epi16(_mm_add_epi16(_mm_mullo_epi16(d, _mm_sub_epi16(k255, al)), _mm_mullo_epi16(p, al)), k127);
+    return _mm_srli_epi16(_mm_mulhi_epu16(v, m), 7);
+}
+
+template <bool Opaque>
+inline __m128i blend16(const uint8_t* dst, const uint8_t* cov, const uint8_t* pat, __m128i a) {
+    const __m128i z = _mm_setzero_si128();
+    const __m128i d = _mm_loadu_si128(reinterpret_cast<const __m128i*>(dst));
+    const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(cov));
+    const __m128i p = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pat));
+    return _mm_packus_epi16(lanes8<Opaque>(_mm_unpacklo_epi8(d, z), _mm_unpacklo_epi8(c, z), _mm_unpacklo_epi8(p, z), a),
+                            lanes8<Opaque>(_mm_unpackhi_epi8(d, z), _mm_unpackhi_epi8(c, z), _mm_unpackhi_epi8(p, z), a));
+}
+
+template <bool Opaque>
+inline void span_sse2_t(uint8_t* dst, const uint8_t* cov, const uint8_t* pat, uint32_t bytes, uint32_t a8, bool slack) {
+    const __m128i a = _mm_set1_epi16(int16_t(a8));
+    if (bytes < 16) {
+        if (slack) {
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), blend16<Opaque>(dst, cov, pat, a));
+        } else {
+            for (uint32_t k = 0; k < bytes; ++k) dst[k] = blend_byte(dst[k], cov[k], pat[k % 3], a8);
+        }
+        return;
+    }
+    const uint32_t last = bytes - 16;
+    const __m128i tail = blend16<Opaque>(dst + last, cov + last, pat + last % 3, a);
+    for (uint32_t k = 0; k < last; k += 16)
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + k), blend16<Opaque>(dst + k, cov + k, pat + k % 3, a));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + last), tail);
+}
+
+void span_sse2(uint8_t* dst, const uint8_t* cov, const uint8_t* pat, uint32_t bytes, uint32_t a, bool slack) {
+    if (a == 255) span_sse2_t<true>(dst, cov, pat, bytes, a, slack);
+    else span_sse2_t<false>(dst, cov, pat, bytes, a, slack);
+}
+
+template <bool Opaque>
+__attribute__((target("avx2"))) inline __m256i lanes16(__m256i d, __m256i c, __m256i p, __m256i a) {
+    const __m256i k127 = _mm256_set1_epi16(127), k255 = _mm256_set1_epi16(255), m = _mm256_set1_epi16(int16_t(0x8081));
+    __m256i al = c;
+    if (!Opaque) al = _mm256_srli_epi16(_mm256_mulhi_epu16(_mm256_add_epi16(_mm256_mullo_epi16(c, a), k127), m), 7);
+    const __m256i v = _mm256_add_epi16(
+        _mm256_add_epi16(_mm256_mullo_epi16(d, _mm256_sub_epi16(k255, al)), _mm256_mullo_epi16(p, al)), k127);
+    return _mm256_srli_epi16(_mm256_mulhi_epu16(v, m), 7);
+}
+
+template <bool Opaque>
+__attribute__((target("avx2"))) inline __m256i blend32(const uint8_t* dst, const uint8_t* cov, const uint8_t* pat, __m256i a) {
+    const __m256i z = _mm256_setzero_si256();
+    const __m256i d = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(dst));
+    const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cov));
+    const __m256i p = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(pat));
+    // unpack/pack work per 128-bit half, so the lanes come back in order.
+    return _mm256_packus_epi16(
+        lanes16<Opaque>(_mm256_unpacklo_epi8(d, z), _mm256_unpacklo_epi8(c, z), _mm256_unpacklo_epi8(p, z), a),
+        lanes16<Opaque>(_mm256_unpackhi_epi8(d, z), _mm256_unpackhi_epi8(c, z), _mm256_unpackhi_epi8(p, z), a));
+}
+
+// 16 bytes as one chain of 16 lanes (zero-extended), half the work of two 8-lane chains.
+template <bool Opaque>
+__attribute__((target("avx2"))) inline __m128i blend16y(const uint8_t* dst, const uint8_t* cov, const uint8_t* pat, __m256i a) {
+    const __m256i d = _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(dst)));
+    const __m256i c = _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(cov)));
+    const __m256i p = _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(pat)));
+    const __m256i v = lanes16<Opaque>(d, c, p, a);
+    return _mm_packus_epi16(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+}
+
+template <bool Opaque>
+__attribute__((target("avx2"))) inline void span_avx2_t(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
+                                                        uint32_t bytes, uint32_t a8, bool slack) {
+    const __m256i a = _mm256_set1_epi16(int16_t(a8));
+    if (bytes <= 32) {
+        if (bytes <= 16) {
+            if (slack || bytes == 16) {
+                _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), blend16y<Opaque>(dst, cov, pat, a));
+            } else {
+                for (uint32_t k = 0; k < bytes; ++k) dst[k] = blend_byte(dst[k], cov[k], pat[k % 3], a8);
+            }
+        } else if (slack) {
+            // May run up to 15 bytes past the span: padding (coverage 0) or the target's slack.
+            _mm256_storeu_si256(reinterpret_cast<__m256i*>(dst), blend32<Opaque>(dst, cov, pat, a));
+        } else {
+            const uint32_t last = bytes - 16;
+            const __m128i head = blend16y<Opaque>(dst, cov, pat, a);
+            const __m128i tail = blend16y<Opaque>(dst + last, cov + last, pat + last % 3, a);
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), head);
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + last), tail);
+        }
+        return;
+    }
+    const uint32_t last = bytes - 32;
+    const __m256i tail = blend32<Opaque>(dst + last, cov + last, pat + last % 3, a);
+    uint32_t ph = 0;  // k % 3; k grows by 32, so the phase by 2 mod 3
+    for (uint32_t k = 0; k < last; k += 32) {
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(dst + k), blend32<Opaque>(dst + k, cov + k, pat + ph, a));
+        ph = ph == 0 ? 2 : ph - 1;
+    }
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(dst + last), tail);
+}
+
+#endif  // SPT_SPAN_X86
+
+using SpanFn = void (*)(uint8_t*, const uint8_t*, const uint8_t*, uint32_t, uint32_t, bool);
+
+void make_pattern(uint8_t* pat96, Rgba8 c) {
+    for (int i = 0; i < 32; ++i) {
+        pat96[3 * i] = c.r;
+        pat96[3 * i + 1] = c.g;
+        pat96[3 * i + 2] = c.b;
+    }
+}
+
+#ifdef SPT_SPAN_X86
+// The same with three byte shuffles of the broadcast colour.
+__attribute__((target("avx2"))) inline void make_pattern_avx2(uint8_t* pat96, Rgba8 c) {
+    uint32_t word;
+    std::memcpy(&word, &c, 4);
+    const __m256i v = _mm256_set1_epi32(int32_t(word));
+    // Byte k of the pattern is channel k % 3; each 128-bit lane shuffles on its own.
+    const __m256i i0 = _mm256_setr_epi8(0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0,
+                                        1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1);
+    const __m256i i1 = _mm256_setr_epi8(2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2,
+                                        0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0);
+    const __m256i i2 = _mm256_setr_epi8(1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1,
+                                        2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(pat96), _mm256_shuffle_epi8(v, i0));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(pat96 + 32), _mm256_shuffle_epi8(v, i1));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(pat96 + 64), _mm256_shuffle_epi8(v, i2));
+}
+#endif
+
+// The loop over a mask's rows, written once and expanded per ISA so that the span kernel
+// inlines (a template would not inline an AVX2 kernel into a function without the target).
+#define SPT_SPANS_LOOP(SPAN, PATTERN)                                                                   \
+    alignas(32) uint8_t pat[96];                                                                      \
+    PATTERN(pat, p.c);                                                                                \
+    const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy), j1 = std::min<int64_t>(p.h, t.y1 - p.oy);   \
+    uint8_t* row = t.px + (p.oy + j0 - t.y0) * int64_t(t.stride);                                     \
+    for (int64_t j = j0; j < j1; ++j, row += t.stride) {                                              \
+        const SpanRow& r = p.rows[j];                                                                 \
+        const int64_t s = p.ox + r.lo;                                                                \
+        const int64_t xs = std::max<int64_t>(s, t.x0), xe = std::min<int64_t>(s + r.n, t.x1);         \
+        if (xs >= xe) continue;                                                                       \
+        SPAN(row + 3 * (xs - t.x0), p.cov3 + r.off + 3 * (xs - s), pat, uint32_t(3 * (xe - xs)), p.c.a, t.slack); \
+    }
+
+void spans_scalar(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_scalar, make_pattern) }
+#ifdef SPT_SPAN_X86
+void spans_sse2(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_sse2, make_pattern) }
+__attribute__((target("avx2"))) inline void span_avx2_inl(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
+                                                          uint32_t bytes, uint32_t a, bool slack) {
+    if (a == 255) span_avx2_t<true>(dst, cov, pat, bytes, a, slack);
+    else span_avx2_t<false>(dst, cov, pat, bytes, a, slack);
+}
+__attribute__((target("avx2"))) void span_avx2(uint8_t* dst, const uint8_t* cov, const uint8_t* pat, uint32_t bytes,
+                                               uint32_t a, bool slack) {
+    span_avx2_inl(dst, cov, pat, bytes, a, slack);
+}
+__attribute__((target("avx2"))) void spans_avx2(const BlendTarget& t, const PlacedSpans& p) {
+    SPT_SPANS_LOOP(span_avx2_inl, make_pattern_avx2)
+}
+#endif
+#undef SPT_SPANS_LOOP
+
+using SpansFn = void (*)(const BlendTarget&, const PlacedSpans&);
+
+struct Kernels {
+    SpansFn spans;
+    SpanFn span;
+};
+
+Kernels pick(BlendIsa isa) {
+#ifdef SPT_SPAN_X86
+    const bool avx2 = blend_isa_available(BlendIsa::Avx2);
+    if (isa == BlendIsa::Scalar) return {spans_scalar, span_scalar};
+    if (isa == BlendIsa::Sse2 || !avx2) return {spans_sse2, span_sse2};
+    return {spans_avx2, span_avx2};
+#else
+    (void)isa;
+    return {spans_scalar, span_scalar};
+#endif
+}
+
+const Kernels& kernels() {
+    static const Kernels best = pick(BlendIsa::Best);
+    if (g_forced == BlendIsa::Best) return best;
+    thread_local Kernels forced;
+    forced = pick(g_forced);
+    return forced;
+}
+
+}  // namespace
+
+void force_span_isa(BlendIsa isa) { g_forced = isa; }
+
+void span_mask_add_row(SpanMask& m, const uint8_t* cov, int64_t n, int64_t first) {
+    int64_t lo = 0, hi = n;
+    while (lo < hi && cov[lo] == 0) ++lo;
+    while (hi > lo && cov[hi - 1] == 0) --hi;
+    SpanRow r;
+    r.lo = int32_t(first + lo);
+    r.n = uint32_t(hi - lo);
+    r.off = uint32_t(m.cov3.size());
+    if (r.n == 0) r.lo = 0;
+    m.cov3.resize(m.cov3.size() + 3 * size_t(r.n) + kSpanPad, 0);
+    uint8_t* d = m.cov3.data() + r.off;
+    for (int64_t i = lo; i < hi; ++i) d[0] = d[1] = d[2] = cov[i], d += 3;
+    m.rows.push_back(r);
+}
+
+void blend_spans(const BlendTarget& t, const PlacedSpans& p) {
+    if (p.c.a == 0) return;
+    kernels().spans(t, p);
+}
+
+void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy, Rgba8 c) {
+    PlacedSpans p;
+    p.rows = m.rows.data();
+    p.cov3 = m.cov3.data();
+    p.ox = int32_t(ox);
+    p.oy = int32_t(oy);
+    p.h = uint32_t(m.rows.size());
+    p.c = c;
+    blend_spans(t, p);
+}
+
+void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c) {
+    if (c.a == 0 || y < t.y0 || y >= t.y1) return;
+    int64_t lo = std::max<int64_t>(0, t.x0 - x), hi = std::min<int64_t>(n, t.x1 - x);
+    while (lo < hi && cov[lo] == 0) ++lo;
+    while (hi > lo && cov[hi - 1] == 0) --hi;
+    if (lo >= hi) return;
+    // Expanded to three bytes a pixel with the zero padding the kernels may read.
+    thread_local std::vector<uint8_t> c3;
+    const size_t need = 3 * size_t(hi - lo) + kSpanPad;
+    if (c3.size() < need) c3.resize(need);
+    uint8_t* d = c3.data();
+    for (int64_t i = lo; i < hi; ++i) d[0] = d[1] = d[2] = cov[i], d += 3;
+    std::memset(d, 0, kSpanPad);
+    alignas(32) uint8_t pat[96];
+    make_pattern(pat, c);
+    kernels().span(t.px + size_t(y - t.y0) * t.stride + 3 * size_t(x + lo - t.x0), c3.data(), pat, uint32_t(3 * (hi - lo)),
+                   c.a, t.slack);
+}
+
+}  // namespace spt::raster

@@ -1,0 +1,57 @@
+// Internal to libspt: the Renderer implementation shared by render.cpp (validation, draw,
+// masks), render_cache.cpp (footprint cache with its memory budget) and render_tiles.cpp
+// (whole-frame tile rendering).
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "raster.hpp"
+#include "spt/render.hpp"
+
+namespace spt {
+
+class RendererImpl final : public Renderer {
+public:
+    RendererImpl(const Header& h, const std::vector<Template>& t);
+
+    Status stroke_mask(const Stroke& s, Mask& out) const override;
+    const Mask& stamp_footprint(uint8_t set, uint8_t tmpl, uint8_t orient) const override;
+    Status draw(Canvas& canvas, const Stroke& s) const override;
+    Status render(Canvas& canvas, const std::vector<Stroke>& strokes) const override;
+    Status render(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const override;
+    size_t footprint_cache_bytes() const override { return cache_bytes_.load(std::memory_order_relaxed); }
+
+    // Range and reference checks of one stroke (SPEC 8.7).
+    Status check(const Stroke& s) const;
+    // The span footprint of a stamp for drawing, built on first use; nullptr when it does not
+    // fit the cache budget (the stamp is then drawn through its inverse map, same pixels).
+    const raster::SpanMask* spans(uint8_t set, uint8_t tmpl, uint8_t orient) const;
+    // Composites a checked stroke onto t, clipped to t.
+    void draw_into(const raster::BlendTarget& t, const Stroke& s) const;
+    // Inclusive canvas pixel box outside which the checked stroke has no coverage (may be
+    // empty: x1 < x0).
+    void stroke_box(const Stroke& s, int64_t& x0, int64_t& y0, int64_t& x1, int64_t& y1) const;
+
+    const Header& header() const { return header_; }
+
+private:
+    size_t slot_index(uint8_t set, uint8_t tmpl, uint8_t orient) const {
+        return (size_t(set) * templates_.size() + tmpl) * header_.orientations.size() + orient;
+    }
+    void draw_map(const raster::BlendTarget& t, const raster::InverseMap& m, const Template& tp, Rgba8 c) const;
+    void draw_curve(const raster::BlendTarget& t, const CurveStroke& s) const;
+
+    Header header_;
+    std::vector<Template> templates_;
+    mutable std::vector<std::atomic<const raster::SpanMask*>> span_slots_;
+    mutable std::vector<std::atomic<const Mask*>> mask_slots_;
+    mutable std::mutex mutex_;
+    mutable std::vector<std::unique_ptr<raster::SpanMask>> owned_spans_;
+    mutable std::vector<std::unique_ptr<Mask>> owned_masks_;
+    mutable std::atomic<size_t> cache_bytes_{0};
+};
+
+}  // namespace spt

@@ -1,0 +1,169 @@
+// Whole-frame rendering (Renderer::render). Drawing 30,000 strokes one after another at random
+// places touches the whole canvas (2.7 MB at 1280x720) for every few strokes, so most time goes
+// to cache misses. Instead every stroke is binned into the tiles its box touches; each tile is
+// then rendered on its own in a small buffer that stays in L1 (background, then its strokes in
+// drawing order, each clipped to the tile), and copied out. A pixel sees exactly the strokes
+// that cover it, in the same order, with the same arithmetic: the bytes equal drawing stroke
+// by stroke (tests/format/render_tiles_test.cpp). Tiles are independent, so threads can render
+// different tiles of one frame without changing a byte.
+#include <algorithm>
+#include <atomic>
+#include <cstring>
+#include <string>
+#include <thread>
+
+#include "render_impl.hpp"
+
+namespace spt {
+
+using namespace raster;
+
+namespace {
+
+// 128 x 64 px: 24 KB of pixels, half of L1; wide tiles split fewer of the (mostly wider than
+// tall) brush strokes. Measured with bench/render_bench against 64x64 and 128x128.
+constexpr int64_t kTileW = 128, kTileH = 64;
+// Tile buffer rows carry the slack the span kernels may write past a clipped span.
+constexpr size_t kTileStride = 3 * kTileW + kSpanPad;
+
+// One stroke prepared for the tiles: a stamp with a cached footprint is drawn from the record
+// alone (spans.rows set); anything else through draw_into(strokes[index]). Records are copied
+// into every tile's list, so a tile reads its strokes sequentially.
+struct Entry {
+    PlacedSpans spans;
+    uint32_t index = 0;
+};
+
+struct Bins {
+    std::vector<Entry> items;
+    std::vector<uint16_t> range;  // per item: first and last tile column, first and last tile row
+    std::vector<uint32_t> start;  // tiles + 1 offsets into list
+    std::vector<Entry> list;      // entries per tile, in drawing order
+};
+
+Bins& scratch_bins() {
+    thread_local Bins b;
+    return b;
+}
+
+}  // namespace
+
+Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes) const {
+    return render(canvas, strokes, 1);
+}
+
+Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const {
+    const int64_t W = header_.width, H = header_.height;
+    canvas.width = header_.width;
+    canvas.height = header_.height;
+    canvas.rgb.resize(size_t(W) * size_t(H) * 3);  // every byte is written by its tile
+    const int64_t tiles_x = (W + kTileW - 1) / kTileW, tiles_y = (H + kTileH - 1) / kTileH;
+    const size_t tiles = size_t(tiles_x * tiles_y);
+
+    // Check and prepare every stroke (this also builds the footprints, so the tile pass only
+    // reads shared state). On a bad stroke, the strokes before it are still drawn, as drawing
+    // them one by one would have done, and the error names it.
+    Bins& bins = scratch_bins();
+    bins.items.clear();
+    bins.range.clear();
+    Status error;
+    for (size_t i = 0; i < strokes.size(); ++i) {
+        const Stroke& s = strokes[i];
+        if (Status st = check(s); !st) {
+            Error e = st.error();
+            e.message = "stroke " + std::to_string(i) + ": " + e.message;
+            error = e;
+            break;
+        }
+        Entry it;
+        it.index = uint32_t(i);
+        it.spans.c = s.kind == StrokeKind::Stamp ? s.stamp.color : s.kind == StrokeKind::Affine ? s.affine.color : s.curve.color;
+        if (it.spans.c.a == 0) continue;
+        int64_t x0, y0, x1, y1;
+        stroke_box(s, x0, y0, x1, y1);
+        x0 = std::max<int64_t>(x0, 0); x1 = std::min<int64_t>(x1, W - 1);
+        y0 = std::max<int64_t>(y0, 0); y1 = std::min<int64_t>(y1, H - 1);
+        if (x0 > x1 || y0 > y1) continue;
+        if (s.kind == StrokeKind::Stamp) {
+            if (const SpanMask* f = spans(s.stamp.set, s.stamp.tmpl, s.stamp.orient)) {
+                it.spans.rows = f->rows.data();
+                it.spans.cov3 = f->cov3.data();
+                it.spans.h = uint32_t(f->rows.size());
+                it.spans.ox = int32_t(stamp_pixel(s.stamp.x) + f->x0);
+                it.spans.oy = int32_t(stamp_pixel(s.stamp.y) + f->y0);
+            }
+        }
+        bins.items.push_back(it);
+        bins.range.insert(bins.range.end(), {uint16_t(x0 / kTileW), uint16_t(x1 / kTileW), uint16_t(y0 / kTileH),
+                                             uint16_t(y1 / kTileH)});
+    }
+
+    // Counting sort of (tile, entry) pairs: one flat list, drawing order kept within a tile.
+    bins.start.assign(tiles + 1, 0);
+    const size_t n = bins.items.size();
+    for (size_t k = 0; k < n; ++k) {
+        const uint16_t* r = &bins.range[4 * k];
+        for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
+            for (uint32_t tx = r[0]; tx <= r[1]; ++tx) ++bins.start[size_t(ty) * size_t(tiles_x) + tx + 1];
+    }
+    for (size_t t = 0; t < tiles; ++t) bins.start[t + 1] += bins.start[t];
+    bins.list.resize(bins.start[tiles]);
+    {
+        std::vector<uint32_t> fill(bins.start.begin(), bins.start.end() - 1);
+        for (size_t k = 0; k < n; ++k) {
+            const uint16_t* r = &bins.range[4 * k];
+            for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
+                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) bins.list[fill[size_t(ty) * size_t(tiles_x) + tx]++] = bins.items[k];
+        }
+    }
+
+    uint8_t bg_row[3 * kTileW];
+    for (int64_t i = 0; i < kTileW; ++i) {
+        bg_row[3 * i] = header_.background.r;
+        bg_row[3 * i + 1] = header_.background.g;
+        bg_row[3 * i + 2] = header_.background.b;
+    }
+
+    std::atomic<size_t> next{0};
+    auto worker = [&]() {
+        thread_local std::vector<uint8_t> buf;
+        buf.resize(kTileStride * size_t(kTileH));
+        for (;;) {
+            const size_t tile = next.fetch_add(1, std::memory_order_relaxed);
+            if (tile >= tiles) break;
+            BlendTarget t;
+            t.px = buf.data();
+            t.stride = kTileStride;
+            t.x0 = int64_t(tile % size_t(tiles_x)) * kTileW;
+            t.y0 = int64_t(tile / size_t(tiles_x)) * kTileH;
+            t.x1 = std::min(t.x0 + kTileW, W);
+            t.y1 = std::min(t.y0 + kTileH, H);
+            t.slack = true;
+            const size_t row_bytes = size_t(t.x1 - t.x0) * 3;
+            for (int64_t y = t.y0; y < t.y1; ++y) std::memcpy(buf.data() + size_t(y - t.y0) * kTileStride, bg_row, row_bytes);
+            for (uint32_t k = bins.start[tile]; k < bins.start[tile + 1]; ++k) {
+                const Entry& e = bins.list[k];
+                if (e.spans.rows) blend_spans(t, e.spans);
+                else draw_into(t, strokes[e.index]);
+            }
+            for (int64_t y = t.y0; y < t.y1; ++y)
+                std::memcpy(canvas.row(uint32_t(y)) + 3 * t.x0, buf.data() + size_t(y - t.y0) * kTileStride, row_bytes);
+        }
+    };
+
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    threads = unsigned(std::min<size_t>(threads, tiles));
+    std::vector<std::thread> pool;
+    for (unsigned k = 1; k < threads; ++k) {
+        try {
+            pool.emplace_back(worker);
+        } catch (...) {
+            break;  // fewer threads, same bytes
+        }
+    }
+    worker();
+    for (auto& th : pool) th.join();
+    return error;
+}
+
+}  // namespace spt

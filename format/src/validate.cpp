@@ -1,0 +1,129 @@
+// Value rules of SPEC.md 3.1, 3.2, 4 and 5.
+#include "validate.hpp"
+
+#include <cstdlib>
+
+#include "byte_io.hpp"
+
+namespace spt::detail {
+namespace {
+Error fail(Code code, const std::string& where, const std::string& msg, uint64_t offset) {
+    return make_error(code, where + ": " + msg + " (byte offset " + std::to_string(offset) + ")", offset);
+}
+bool coord_ok(int64_t v) { return v >= -kMaxCoord && v <= kMaxCoord; }
+bool matrix_ok(int64_t v) { return v >= -kMaxMatrix && v <= kMaxMatrix; }
+}  // namespace
+
+Status check_header(const Header& h, const Limits& lim, Code code, const std::string& where, uint64_t off) {
+    if (h.version_major != 1)
+        return fail(Code::Unsupported, where, "format major version " + std::to_string(h.version_major) + " is not 1", off);
+    if (h.width < 1 || h.height < 1)
+        return fail(code, where, "canvas " + std::to_string(h.width) + "x" + std::to_string(h.height) + " is empty", off);
+    if (h.width > lim.max_width || h.height > lim.max_height ||
+        uint64_t(h.width) * h.height > lim.max_pixels)
+        return fail(Code::LimitExceeded, where, "canvas " + std::to_string(h.width) + "x" + std::to_string(h.height) +
+                    " exceeds the limits", off);
+    if (h.fps.num == 0 || h.fps.den == 0) return fail(code, where, "frame rate has a zero term", off);
+    if (h.color != ColorEncoding::Srgb8)
+        return fail(Code::Unsupported, where, "colour encoding " + std::to_string(int(h.color)) + " is not 0", off);
+    if (h.sets.empty() || h.sets.size() > kMaxSets)
+        return fail(code, where, "set count " + std::to_string(h.sets.size()) + " is not 1..16", off);
+    for (size_t i = 0; i < h.sets.size(); ++i)
+        if (h.sets[i].width < 1 || h.sets[i].height < 1 || h.sets[i].width > kMaxSetSide || h.sets[i].height > kMaxSetSide)
+            return fail(code, where, "set " + std::to_string(i) + " size is not 1..4096", off);
+    if (h.orientations.empty() || h.orientations.size() > kMaxOrientations)
+        return fail(code, where, "orientation count " + std::to_string(h.orientations.size()) + " is not 1..64", off);
+    for (size_t i = 0; i < h.orientations.size(); ++i) {
+        const int64_t c = h.orientations[i].cos_q14, s = h.orientations[i].sin_q14;
+        if (c * c + s * s > (int64_t(1) << 28) + (int64_t(1) << 16))
+            return fail(code, where, "orientation " + std::to_string(i) + " is longer than 1", off);
+    }
+    return {};
+}
+
+Status check_template(const Template& t, const Limits& lim, Code code, const std::string& where, uint64_t off) {
+    if (uint8_t(t.kind) > 3) return fail(Code::Unsupported, where, "template kind " + std::to_string(int(t.kind)) + " is reserved", off);
+    if (t.name.size() > 255) return fail(code, where, "template name is longer than 255 bytes", off);
+    if (t.kind == TemplateKind::Bitmap) {
+        if (t.width < 1 || t.height < 1 || t.width > kMaxTemplateSide || t.height > kMaxTemplateSide)
+            return fail(code, where, "bitmap template size " + std::to_string(t.width) + "x" + std::to_string(t.height) +
+                        " is not 1..1024", off);
+        if (t.width > lim.max_template_side || t.height > lim.max_template_side)
+            return fail(Code::LimitExceeded, where, "bitmap template size exceeds the limits", off);
+        if (t.pixels.size() != size_t(t.width) * t.height)
+            return fail(code, where, "bitmap template has " + std::to_string(t.pixels.size()) + " samples, not width*height", off);
+    } else if (t.width || t.height || !t.pixels.empty()) {
+        return fail(code, where, "analytic template has a size or samples", off);
+    }
+    return {};
+}
+
+Status check_stroke(const Stroke& s, const StreamShape& sh, const Limits& lim, Code code,
+                    const std::string& where, uint64_t off) {
+    switch (s.kind) {
+        case StrokeKind::Stamp: {
+            const auto& t = s.stamp;
+            if (t.set >= sh.sets) return fail(code, where, "stamp set " + std::to_string(t.set) + " is not below the set count " + std::to_string(sh.sets), off);
+            if (t.tmpl >= sh.templates) return fail(code, where, "template " + std::to_string(t.tmpl) + " is not below the template count " + std::to_string(sh.templates), off);
+            if (t.orient >= sh.orientations) return fail(code, where, "orientation " + std::to_string(t.orient) + " is not below the orientation count " + std::to_string(sh.orientations), off);
+            if (!coord_ok(t.x) || !coord_ok(t.y)) return fail(code, where, "stamp position is outside +-2^24", off);
+            return {};
+        }
+        case StrokeKind::Affine: {
+            const auto& t = s.affine;
+            if (t.tmpl >= sh.templates) return fail(code, where, "template " + std::to_string(t.tmpl) + " is not below the template count " + std::to_string(sh.templates), off);
+            if (!coord_ok(t.tx) || !coord_ok(t.ty)) return fail(code, where, "affine translation is outside +-2^24", off);
+            if (!matrix_ok(t.a) || !matrix_ok(t.b) || !matrix_ok(t.c) || !matrix_ok(t.d))
+                return fail(code, where, "affine matrix entry is outside +-2^16", off);
+            if (int64_t(t.a) * t.d - int64_t(t.b) * t.c == 0) return fail(code, where, "affine matrix is singular", off);
+            return {};
+        }
+        case StrokeKind::Curve: {
+            const auto& c = s.curve;
+            if (c.points.empty()) return fail(code, where, "curve has no points", off);
+            if (c.points.size() > lim.max_curve_points)
+                return fail(Code::LimitExceeded, where, "curve has " + std::to_string(c.points.size()) + " points, above the limit", off);
+            for (const auto& p : c.points) {
+                if (!coord_ok(p.x) || !coord_ok(p.y)) return fail(code, where, "curve point is outside +-2^24", off);
+                if (p.width > kMaxWidthQ4) return fail(code, where, "curve width is above 2^16", off);
+            }
+            return {};
+        }
+    }
+    return fail(code, where, "stroke kind " + std::to_string(int(s.kind)) + " is reserved", off);
+}
+
+Status check_frame(const Frame& f, const StreamShape& sh, const Limits& lim, uint64_t prev_live,
+                   Code code, const std::string& where, uint64_t off) {
+    if (f.added.size() > lim.max_strokes_per_frame)
+        return fail(Code::LimitExceeded, where, std::to_string(f.added.size()) + " strokes exceed the per-frame limit", off);
+    if (f.type == FrameType::Key) {
+        if (!f.removed.empty() || !f.motion.empty()) return fail(code, where, "key frame has removals or motion", off);
+        if (f.added.size() > lim.max_live_strokes) return fail(Code::LimitExceeded, where, "live list exceeds the limit", off);
+    } else if (f.type == FrameType::Inter) {
+        for (size_t i = 0; i < f.removed.size(); ++i) {
+            if (f.removed[i] >= prev_live)
+                return fail(code, where, "removed index " + std::to_string(f.removed[i]) + " is not below the live count " + std::to_string(prev_live), off);
+            if (i && f.removed[i] <= f.removed[i - 1]) return fail(code, where, "removed indices are not strictly increasing", off);
+        }
+        if (prev_live != kUnknownLive && prev_live - f.removed.size() + f.added.size() > lim.max_live_strokes)
+            return fail(Code::LimitExceeded, where, "live list exceeds the limit", off);
+        if (!f.motion.empty()) {
+            const auto& m = f.motion;
+            if (m.block_size < 8 || m.block_size > 256) return fail(code, where, "motion block size " + std::to_string(m.block_size) + " is not 8..256", off);
+            if (m.cols != blocks_for(sh.width, m.block_size) || m.rows != blocks_for(sh.height, m.block_size))
+                return fail(code, where, "motion field is " + std::to_string(m.cols) + "x" + std::to_string(m.rows) + " blocks, not the canvas's", off);
+            if (m.vectors.size() != size_t(m.cols) * m.rows) return fail(code, where, "motion field has the wrong vector count", off);
+        }
+    } else {
+        return fail(Code::Unsupported, where, "frame type " + std::to_string(int(f.type)) + " is reserved", off);
+    }
+    // The message names the stroke; it is only built for a stroke that fails.
+    static const std::string kNone;
+    for (size_t i = 0; i < f.added.size(); ++i)
+        if (!check_stroke(f.added[i], sh, lim, code, kNone, off).ok())
+            return check_stroke(f.added[i], sh, lim, code, where + ", stroke " + std::to_string(i), off);
+    return {};
+}
+
+}  // namespace spt::detail

@@ -1,0 +1,46 @@
+// Internal: the value rules of SPEC.md sections 3-5, shared by the writer (which rejects what
+// it is asked to write, InvalidArgument) and the decoders (which reject what they read, Corrupt).
+#pragma once
+
+#include <string>
+
+#include "spt/limits.hpp"
+#include "spt/reader.hpp"
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+
+namespace spt::detail {
+
+constexpr int32_t kMaxCoord = 1 << 24;     // |x|, |y|, |tx|, |ty|
+constexpr int32_t kMaxMatrix = 1 << 16;    // |a|, |b|, |c|, |d|
+constexpr uint32_t kMaxWidthQ4 = 1u << 16; // curve width
+constexpr uint32_t kMaxSets = 16, kMaxOrientations = 64, kMaxSetSide = 4096;
+constexpr uint32_t kMaxTemplateSide = 1024;
+
+// What decoding a stroke needs to know about the stream.
+struct StreamShape {
+    uint32_t width = 0, height = 0;
+    uint32_t sets = 0, orientations = 0, templates = 0;
+    static StreamShape of(const Header& h, size_t templates) {
+        return {h.width, h.height, uint32_t(h.sets.size()), uint32_t(h.orientations.size()), uint32_t(templates)};
+    }
+};
+
+// `code` is the error code to report (InvalidArgument when writing, Corrupt when reading);
+// `where` prefixes the message; `offset` is the byte offset to report.
+Status check_header(const Header& h, const Limits& lim, Code code, const std::string& where, uint64_t offset);
+Status check_template(const Template& t, const Limits& lim, Code code, const std::string& where, uint64_t offset);
+Status check_stroke(const Stroke& s, const StreamShape& shape, const Limits& lim, Code code,
+                    const std::string& where, uint64_t offset);
+// A live list length not known to the decoder (a frame decoded on its own): removals are then
+// checked when the frame is applied.
+constexpr uint64_t kUnknownLive = ~uint64_t(0);
+
+// Checks a frame's removal list and motion field against the previous live list length and
+// the canvas, and its strokes. `prev_live` is ignored for key frames.
+Status check_frame(const Frame& f, const StreamShape& shape, const Limits& lim, uint64_t prev_live,
+                   Code code, const std::string& where, uint64_t offset);
+
+inline uint16_t blocks_for(uint32_t extent, uint32_t block) { return uint16_t((extent + block - 1) / block); }
+
+}  // namespace spt::detail

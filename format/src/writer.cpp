@@ -1,0 +1,198 @@
+// Streaming writer (SPEC.md 9.1): constant memory; keeps only the index entries and the live
+// list length. Writes "<path>.partial" and renames it into place in finish().
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "container.hpp"
+#include "frame_coding.hpp"
+#include "spt/writer.hpp"
+#include "validate.hpp"
+
+namespace spt {
+
+const char* field_name(Field f) {
+    switch (f) {
+        case Field::Count: return "counts";
+        case Field::Kind: return "kind";
+        case Field::SetTemplate: return "set/template";
+        case Field::Orientation: return "orientation";
+        case Field::Position: return "position";
+        case Field::Color: return "colour";
+        case Field::Alpha: return "alpha";
+        case Field::Geometry: return "geometry";
+        case Field::Removal: return "removals";
+        case Field::Motion: return "motion";
+    }
+    return "?";
+}
+
+Writer::~Writer() = default;
+
+namespace {
+
+using detail::ByteSink;
+
+class FileWriter final : public Writer {
+public:
+    FileWriter(std::string path, std::string out_path, const StreamInfo& info, const WriterOptions& opts)
+        : path_(std::move(path)), out_path_(std::move(out_path)), header_(info.header),
+          shape_(detail::StreamShape::of(info.header, info.templates.size())), opts_(opts) {}
+    ~FileWriter() override { if (!finished_) abort(); }
+
+    Status open_and_write_start(const StreamInfo& info) {
+        file_ = std::fopen(out_path_.c_str(), "wb");
+        if (!file_) return make_error(Code::IoError, out_path_ + ": cannot create: " + std::strerror(errno));
+        ByteSink s;
+        for (uint8_t b : detail::kSignature) s.u8(b);
+        Header h = header_;
+        h.frame_count = kUnknownFrameCount;  // patched in finish()
+        detail::put_chunk(s, "HEAD", detail::encode_head(h));
+        const Coding tc = opts_.coding == Coding::Range ? opts_.template_coding : Coding::Stored;
+        for (const auto& t : info.templates) {
+            auto payload = detail::encode_tmpl(t, tc);
+            if (!payload) return payload.error();
+            detail::put_chunk(s, "TMPL", *payload);
+        }
+        if (!info.metadata.empty()) detail::put_chunk(s, "meta", detail::encode_meta(info.metadata));
+        for (const auto& r : info.rois) rois_.push_back(r);
+        stats_.header_bytes = s.size();
+        return write(s.bytes());
+    }
+
+    Status append(const Frame& frame) override {
+        if (auto st = usable(); !st) return st;
+        const std::string where = "frame " + std::to_string(frame.index);
+        if (frame.index != next_index_)
+            return make_error(Code::InvalidArgument, where + ": expected frame index " + std::to_string(next_index_));
+        if (next_index_ == 0 && frame.type != FrameType::Key)
+            return make_error(Code::InvalidArgument, where + ": the first frame must be a key frame");
+        if (next_index_ == 0xFFFFFFFEu) return make_error(Code::InvalidArgument, where + ": too many frames");
+        Limits lim;
+        lim.max_curve_points = 0xFFFFFFFFu;  // writers follow the format, not a reader's limits
+        lim.max_strokes_per_frame = lim.max_live_strokes = 0xFFFFFFFFu;
+        if (auto st = detail::check_frame(frame, shape_, lim, live_, Code::InvalidArgument, where, pos_); !st) return st;
+        ByteSink chunk_payload;
+        detail::encode_frame_header(chunk_payload, {frame.index, uint8_t(frame.type), uint8_t(opts_.coding)});
+        detail::BodySplit split;
+        detail::encode_frame_body(frame, opts_.coding, shape_, chunk_payload.bytes(), &split, &stats_.fields);
+        if (chunk_payload.size() > 0xFFFFFFFFull)
+            return fail(make_error(Code::InvalidArgument, where + ": frame body exceeds 4 GiB"));
+        ByteSink chunk;
+        detail::put_chunk(chunk, "FRAM", chunk_payload.bytes());
+        const uint64_t offset = pos_;
+        if (auto st = write(chunk.bytes()); !st) return st;
+        index_.push_back({frame.index, uint8_t(frame.type), offset});
+        ++next_index_;
+        live_ = frame.type == FrameType::Key ? frame.added.size() : live_ - frame.removed.size() + frame.added.size();
+        stats_.frame_bytes += chunk.size();
+        stats_.stroke_bytes += split.stroke_bytes;
+        stats_.motion_bytes += split.motion_bytes;
+        ++stats_.frames;
+        if (frame.type == FrameType::Key) ++stats_.key_frames;
+        stats_.strokes += frame.added.size();
+        return {};
+    }
+
+    Status add_roi(const Roi& roi) override {
+        if (auto st = usable(); !st) return st;
+        if (roi.last_frame < roi.first_frame) return make_error(Code::InvalidArgument, "roi: last_frame before first_frame");
+        rois_.push_back(roi);
+        return {};
+    }
+
+    Status finish() override {
+        if (auto st = usable(); !st) return st;
+        if (next_index_ == 0) return make_error(Code::InvalidArgument, path_ + ": a file needs at least one frame");
+        ByteSink s;
+        if (!rois_.empty()) detail::put_chunk(s, "rois", detail::encode_rois(rois_));
+        stats_.header_bytes += s.size();
+        const uint64_t index_offset = pos_ + s.size();
+        const size_t before = s.size();
+        detail::put_chunk(s, "indx", detail::encode_indx(index_));
+        stats_.index_bytes = s.size() - before;
+        detail::put_chunk(s, "IEND", detail::encode_iend(next_index_, index_offset));
+        if (auto st = write(s.bytes()); !st) return st;
+        // The frame count is known now: patch HEAD (same length) so readers see it up front.
+        Header h = header_;
+        h.frame_count = next_index_;
+        ByteSink head;
+        detail::put_chunk(head, "HEAD", detail::encode_head(h));
+        if (std::fseek(file_, 8, SEEK_SET) != 0 || std::fwrite(head.bytes().data(), 1, head.size(), file_) != head.size())
+            return fail(make_error(Code::IoError, out_path_ + ": cannot update HEAD: " + std::strerror(errno)));
+        if (std::fflush(file_) != 0)
+            return fail(make_error(Code::IoError, out_path_ + ": cannot flush: " + std::strerror(errno)));
+        const int rc = std::fclose(file_);
+        file_ = nullptr;
+        if (rc != 0) return fail(make_error(Code::IoError, out_path_ + ": cannot close: " + std::strerror(errno)));
+        if (out_path_ != path_ && std::rename(out_path_.c_str(), path_.c_str()) != 0)
+            return fail(make_error(Code::IoError, path_ + ": cannot rename " + out_path_ + " into place: " + std::strerror(errno)));
+        stats_.total_bytes = pos_;
+        finished_ = true;
+        return {};
+    }
+
+    void abort() override {
+        if (file_) { std::fclose(file_); file_ = nullptr; }
+        if (!finished_ && !removed_) { std::remove(out_path_.c_str()); removed_ = true; }
+        failed_ = true;
+    }
+
+    const WriteStats& stats() const override { return stats_; }
+
+private:
+    Status usable() const {
+        if (finished_) return make_error(Code::BadState, path_ + ": writer already finished");
+        if (failed_) return make_error(Code::BadState, path_ + ": writer failed earlier or was aborted");
+        return {};
+    }
+    Error fail(Error e) {
+        abort();
+        return e;
+    }
+    Status write(const std::vector<uint8_t>& b) {
+        if (!b.empty() && std::fwrite(b.data(), 1, b.size(), file_) != b.size())
+            return fail(make_error(Code::IoError, out_path_ + ": write failed at byte offset " + std::to_string(pos_) + ": " +
+                                                      std::strerror(errno), pos_));
+        pos_ += b.size();
+        stats_.total_bytes = pos_;
+        return {};
+    }
+
+    std::string path_, out_path_;
+    Header header_;
+    detail::StreamShape shape_;
+    WriterOptions opts_;
+    std::FILE* file_ = nullptr;
+    uint64_t pos_ = 0;
+    uint32_t next_index_ = 0;
+    uint64_t live_ = 0;
+    std::vector<detail::IndexEntry> index_;
+    std::vector<Roi> rois_;
+    WriteStats stats_;
+    bool finished_ = false, failed_ = false, removed_ = false;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<Writer>> Writer::create(const std::string& path, const StreamInfo& info,
+                                               const WriterOptions& opts) {
+    Limits lim;  // the format's own bounds, not a reader's
+    lim.max_width = lim.max_height = 0xFFFFFFFFu;
+    lim.max_pixels = ~uint64_t(0);
+    lim.max_template_side = detail::kMaxTemplateSide;
+    if (auto st = detail::check_header(info.header, lim, Code::InvalidArgument, path + ": header", 0); !st) return st.error();
+    if (info.templates.size() > 255)
+        return make_error(Code::InvalidArgument, path + ": " + std::to_string(info.templates.size()) + " templates, at most 255");
+    for (size_t i = 0; i < info.templates.size(); ++i)
+        if (auto st = detail::check_template(info.templates[i], lim, Code::InvalidArgument, path + ": template " + std::to_string(i), 0); !st)
+            return st.error();
+    if (opts.coding != Coding::Stored && opts.coding != Coding::Range)
+        return make_error(Code::InvalidArgument, path + ": unknown frame coding");
+    const std::string out_path = opts.atomic_rename ? path + ".partial" : path;
+    auto w = std::make_unique<FileWriter>(path, out_path, info, opts);
+    if (auto st = w->open_and_write_start(info); !st) return st.error();
+    return std::unique_ptr<Writer>(std::move(w));
+}
+
+}  // namespace spt

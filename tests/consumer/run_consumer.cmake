@@ -1,0 +1,37 @@
+# Runs the installability test (see CMakeLists.txt): install, configure, build, run.
+foreach(v SPT_BINARY_DIR PROJECT_DIR WORK_DIR GENERATOR CXX_COMPILER)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "run_consumer.cmake: ${v} is not set")
+  endif()
+endforeach()
+if(NOT BUILD_TYPE)
+  set(BUILD_TYPE Release)
+endif()
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(prefix "${WORK_DIR}/prefix")
+
+function(step name)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "consumer test: ${name} failed (${rc})\n${out}\n${err}")
+  endif()
+  message(STATUS "consumer test: ${name}: ok")
+  set(step_output "${out}" PARENT_SCOPE)
+endfunction()
+
+step("install" ${CMAKE_COMMAND} --install "${SPT_BINARY_DIR}" --prefix "${prefix}" --config ${BUILD_TYPE})
+if(NOT EXISTS "${prefix}/include/spt/spt.hpp")
+  message(FATAL_ERROR "consumer test: ${prefix}/include/spt/spt.hpp was not installed")
+endif()
+step("configure" ${CMAKE_COMMAND} -S "${PROJECT_DIR}" -B "${WORK_DIR}/build" -G "${GENERATOR}"
+     -DCMAKE_BUILD_TYPE=${BUILD_TYPE} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
+     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+step("build" ${CMAKE_COMMAND} --build "${WORK_DIR}/build")
+step("run" "${WORK_DIR}/build/spt_consumer" "${WORK_DIR}/one_frame.spt")
+message(STATUS "${step_output}")
+if(NOT step_output MATCHES "consumer ok")
+  message(FATAL_ERROR "consumer test: unexpected output: ${step_output}")
+endif()
+file(REMOVE_RECURSE "${WORK_DIR}")

@@ -1,0 +1,55 @@
+// The hash recorded in tests/format/golden/MANIFEST.txt: FNV-1a 64 over the canonical
+// stored-mode bytes of a live stroke list, i.e. a coding-0 key frame body (SPEC.md 6):
+// u32 stroke_count, then the stroke records. Written independently of libspt's stored coder.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "spt/types.hpp"
+
+namespace spt::testing {
+
+inline void put32(std::vector<uint8_t>& b, uint32_t v) {
+    for (int i = 0; i < 4; ++i) b.push_back(uint8_t(v >> (8 * i)));
+}
+
+inline std::vector<uint8_t> canonical_stored_bytes(const std::vector<Stroke>& live) {
+    std::vector<uint8_t> b;
+    put32(b, uint32_t(live.size()));
+    auto rgba = [&](const Rgba8& c) { b.push_back(c.r); b.push_back(c.g); b.push_back(c.b); b.push_back(c.a); };
+    for (const auto& s : live) {
+        b.push_back(uint8_t(s.kind));
+        if (s.kind == StrokeKind::Stamp) {
+            b.push_back(s.stamp.set); b.push_back(s.stamp.tmpl); b.push_back(s.stamp.orient);
+            put32(b, uint32_t(s.stamp.x)); put32(b, uint32_t(s.stamp.y));
+            rgba(s.stamp.color);
+        } else if (s.kind == StrokeKind::Affine) {
+            const auto& a = s.affine;
+            b.push_back(a.tmpl);
+            for (int32_t v : {a.tx, a.ty, a.a, a.b, a.c, a.d}) put32(b, uint32_t(v));
+            rgba(a.color);
+        } else {
+            rgba(s.curve.color);
+            put32(b, uint32_t(s.curve.points.size()));
+            for (const auto& p : s.curve.points) { put32(b, uint32_t(p.x)); put32(b, uint32_t(p.y)); put32(b, p.width); }
+        }
+    }
+    return b;
+}
+
+inline uint64_t fnv1a64(const std::vector<uint8_t>& b) {
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (uint8_t c : b) { h ^= c; h *= 0x100000001b3ull; }
+    return h;
+}
+
+inline std::string hex64(uint64_t v) {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+    return buf;
+}
+
+}  // namespace spt::testing

@@ -1,0 +1,80 @@
+// Decodes every committed golden file and compares each frame's live list with MANIFEST.txt.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "format/coding_random_streams.hpp"
+#include "format/golden_canonical.hpp"
+
+using namespace spt;
+using namespace spt::testing;
+
+namespace {
+
+const std::string kDir = std::string(SPT_SOURCE_DIR) + "/tests/format/golden";
+
+struct Row { std::string file; size_t frame; size_t strokes; std::string hash; };
+
+std::vector<Row> manifest() {
+    std::vector<Row> rows;
+    std::ifstream f(kDir + "/MANIFEST.txt");
+    std::string line;
+    while (std::getline(f, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream is(line);
+        Row r;
+        std::string render;
+        is >> r.file >> r.frame >> r.strokes >> r.hash >> render;
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+}  // namespace
+
+TEST(GoldenConformance, EveryManifestFrameDecodesToItsHash) {
+    const auto rows = manifest();
+    ASSERT_GE(rows.size(), 20u) << "MANIFEST.txt missing or short";
+    std::map<std::string, std::unique_ptr<Reader>> open;
+    for (const auto& r : rows) {
+        SCOPED_TRACE(r.file + " frame " + std::to_string(r.frame));
+        auto& rd = open[r.file];
+        if (!rd) {
+            auto o = Reader::open(kDir + "/" + r.file);
+            ASSERT_TRUE(o.ok()) << o.error().message;
+            rd = std::move(*o);
+            EXPECT_TRUE(rd->complete());
+        }
+        auto s = rd->strokes_at(r.frame);
+        ASSERT_TRUE(s.ok()) << s.error().message;
+        EXPECT_EQ((*s)->size(), r.strokes);
+        EXPECT_EQ(hex64(fnv1a64(canonical_stored_bytes(**s))), r.hash);
+    }
+}
+
+TEST(GoldenConformance, StoredTwinsAreStoredAndRangeFilesAreRangeCoded) {
+    for (const auto& r : manifest()) {
+        auto o = Reader::open(kDir + "/" + r.file);
+        ASSERT_TRUE(o.ok());
+        const bool stored = r.file.find(".stored.spt") != std::string::npos;
+        for (const auto& e : (*o)->frames()) EXPECT_EQ(e.coding, stored ? Coding::Stored : Coding::Range) << r.file;
+    }
+}
+
+TEST(GoldenConformance, SpecialCasesAreWhatTheyClaim) {
+    auto ni = Reader::open(kDir + "/no_index.spt");
+    ASSERT_TRUE(ni.ok());
+    EXPECT_FALSE((*ni)->has_index());
+    EXPECT_TRUE((*ni)->complete());
+    auto ua = Reader::open(kDir + "/unknown_ancillary.stored.spt");
+    ASSERT_TRUE(ua.ok());
+    EXPECT_TRUE((*ua)->has_index());
+    const auto b = read_bytes(kDir + "/unknown_ancillary.stored.spt");
+    EXPECT_NE(std::string(b.begin(), b.end()).find("xtRa"), std::string::npos);
+    auto im = Reader::open(kDir + "/inter_motion.spt");
+    ASSERT_TRUE(im.ok());
+    EXPECT_EQ((*im)->info().header.sets.size(), 16u);
+    EXPECT_EQ((*im)->info().header.orientations.size(), 64u);
+}

@@ -1,0 +1,262 @@
+// Regenerates the golden conformance files in tests/format/golden/ and their MANIFEST.txt.
+// Not run by the tests (they only decode the committed files): run it by hand after a
+// deliberate format change, and review the diff.
+//   make_golden [output_dir]
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "format/coding_random_streams.hpp"
+#include "format/golden_canonical.hpp"
+#include "spt/spt.hpp"
+
+using namespace spt;
+using namespace spt::testing;
+
+namespace {
+
+struct Case {
+    std::string name;
+    std::string about;
+    RandomStream stream;
+    bool drop_index = false;           // rewrite without indx (IEND index_offset 0)
+    bool unknown_ancillary = false;    // insert an unknown ancillary chunk after HEAD
+};
+
+Template ellipse() { Template t; t.kind = TemplateKind::Ellipse; t.name = "ellipse"; return t; }
+Template rect() { Template t; t.kind = TemplateKind::Rectangle; return t; }
+Template tri() { Template t; t.kind = TemplateKind::Triangle; t.name = "triangle"; return t; }
+Template bitmap(uint16_t w, uint16_t h) {
+    Template t;
+    t.width = w; t.height = h; t.name = "brush";
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int dx = 2 * x + 1 - w, dy = 2 * y + 1 - h;
+            const int r2 = dx * dx * h * h + dy * dy * w * w, R2 = w * w * h * h;
+            t.pixels.push_back(uint8_t(r2 <= R2 / 2 ? 255 : r2 <= R2 ? 128 : 0));
+        }
+    return t;
+}
+Header header(uint32_t w, uint32_t h, int sets, int orients) {
+    Header hd;
+    hd.width = w; hd.height = h; hd.fps = {25, 1}; hd.background = {250, 245, 235};
+    for (int i = 0; i < sets; ++i) hd.sets.push_back({uint16_t(32 >> std::min(i, 4)), uint16_t(std::max(1, 16 >> std::min(i, 4)))});
+    hd.orientations = default_orientations(orients);
+    return hd;
+}
+Stroke stamp(int set, int tmpl, int o, int32_t x, int32_t y, Rgba8 c) {
+    StampStroke s; s.set = uint8_t(set); s.tmpl = uint8_t(tmpl); s.orient = uint8_t(o); s.x = x; s.y = y; s.color = c;
+    return Stroke::make_stamp(s);
+}
+
+std::vector<Case> cases() {
+    std::vector<Case> v;
+    {   // 1x1 canvas, one stamp.
+        Case c{"tiny_1x1", "1x1 canvas, one set, one orientation, one stamp on the only pixel", {}};
+        c.stream.info.header = header(1, 1, 1, 1);
+        c.stream.info.templates = {ellipse()};
+        Frame f; f.added = {stamp(0, 0, 0, 8, 8, {200, 10, 20, 255})};
+        c.stream.frames = {f};
+        v.push_back(c);
+    }
+    {   // Empty key frames.
+        Case c{"empty_key", "an empty key frame, a key frame with one stroke, an empty inter frame", {}};
+        c.stream.info.header = header(16, 9, 2, 8);
+        c.stream.info.templates = {ellipse()};
+        Frame a; a.index = 0;
+        Frame b; b.index = 1; b.added = {stamp(1, 0, 3, 40, 24, {1, 2, 3, 128})};
+        Frame d; d.index = 2; d.type = FrameType::Inter;
+        c.stream.frames = {a, b, d};
+        v.push_back(c);
+    }
+    {   // Every kind, every template kind, negative and off-canvas coordinates, a 1-point curve.
+        Case c{"all_kinds", "stamp, affine and curve strokes; bitmap and analytic templates; negative coordinates; "
+                            "a curve with one point; translucent colours; metadata and rois", {}};
+        c.stream.info.header = header(64, 48, 3, 8);
+        c.stream.info.templates = {bitmap(9, 7), ellipse(), rect(), tri()};
+        c.stream.info.metadata = {{"software", "spt make_golden"}, {"title", "all kinds"}};
+        c.stream.info.rois = {{0, 0, 4, 4, 20, 10}};
+        Frame f;
+        f.added.push_back(stamp(0, 0, 2, 16 * 10 + 8, 16 * 12 + 8, {10, 200, 30, 255}));
+        f.added.push_back(stamp(2, 1, 7, -5, -40, {255, 255, 0, 17}));
+        AffineStroke a; a.tmpl = 3; a.tx = -33; a.ty = 16 * 20; a.a = 160; a.b = -40; a.c = 30; a.d = 200; a.color = {0, 0, 255, 200};
+        f.added.push_back(Stroke::make_affine(a));
+        AffineStroke r; r.tmpl = 2; r.tx = 16 * 70; r.ty = 16 * 30 + 3; r.a = -80; r.b = 0; r.c = 0; r.d = 48; r.color = {9, 8, 7, 255};
+        f.added.push_back(Stroke::make_affine(r));
+        CurveStroke one; one.color = {100, 50, 25, 255}; one.points = {{16 * 5, 16 * 40, 64}};
+        f.added.push_back(Stroke::make_curve(one));
+        CurveStroke cv; cv.color = {5, 80, 160, 90};
+        cv.points = {{-16, -16, 0}, {16 * 30, 16 * 10, 48}, {16 * 60 + 5, 16 * 47 + 9, 96}, {16 * 80, 16 * 50, 8}};
+        f.added.push_back(Stroke::make_curve(cv));
+        c.stream.frames = {f};
+        v.push_back(c);
+    }
+    {   // Motion and removals.
+        Case c{"inter_motion", "key frame, then inter frames with removals, a block motion field (block 16) and additions; "
+                               "a second key frame; 16 sets and 64 orientations", {}};
+        c.stream.info.header = header(70, 40, 16, 64);
+        c.stream.info.templates = {ellipse(), bitmap(5, 5)};
+        Frame k;
+        for (int i = 0; i < 40; ++i)
+            k.added.push_back(stamp(i % 16, i % 2, (i * 7) % 64, 16 * ((i * 13) % 70) + 8, 16 * ((i * 7) % 40) + 8,
+                                    {uint8_t(i * 6), uint8_t(255 - i * 5), uint8_t(i * 3), 255}));
+        Frame i1; i1.index = 1; i1.type = FrameType::Inter;
+        i1.removed = {0, 3, 4, 5, 39};
+        i1.motion.block_size = 16; i1.motion.cols = 5; i1.motion.rows = 3;
+        for (int b = 0; b < 15; ++b) i1.motion.vectors.push_back(b == 7 ? std::pair<int16_t, int16_t>{-40, 12} : std::pair<int16_t, int16_t>{5, -3});
+        i1.added = {stamp(15, 1, 63, 16 * 69 + 8, 16 * 39 + 8, {0, 0, 0, 255})};
+        Frame i2; i2.index = 2; i2.type = FrameType::Inter;
+        i2.removed = {1};
+        i2.motion.block_size = 256; i2.motion.cols = 1; i2.motion.rows = 1; i2.motion.vectors = {{-1, 1}};
+        Frame k2; k2.index = 3; k2.added = {stamp(3, 0, 33, 100, 100, {1, 1, 1, 1})};
+        Frame i3; i3.index = 4; i3.type = FrameType::Inter; i3.removed = {0};
+        c.stream.frames = {k, i1, i2, k2, i3};
+        v.push_back(c);
+    }
+    {
+        Case c{"no_index", "a complete file without indx (IEND index_offset 0): readers scan", {}};
+        c.stream = make_random_stream(5, {});
+        c.drop_index = true;
+        v.push_back(c);
+    }
+    {
+        Case c{"unknown_ancillary", "an unknown ancillary chunk 'xtRa' after HEAD, which readers skip", {}};
+        c.stream.info.header = header(20, 20, 1, 4);
+        c.stream.info.templates = {rect()};
+        Frame f; f.added = {stamp(0, 0, 1, 80, 80, {7, 7, 7, 255})};
+        c.stream.frames = {f};
+        c.unknown_ancillary = true;
+        v.push_back(c);
+    }
+    {
+        StreamShapeOptions o;
+        o.max_side = 120;
+        o.frames = 5;
+        o.max_strokes = 40;
+        Case c{"random_mix", "a random stream of every stroke kind with motion and removals (seed 42)", make_random_stream(42, o)};
+        v.push_back(c);
+    }
+    return v;
+}
+
+// ---- chunk-level rewriting, for the variants the Writer does not produce ----
+struct RawChunk { std::string type; std::vector<uint8_t> payload; };
+
+std::vector<RawChunk> split_chunks(const std::vector<uint8_t>& b) {
+    std::vector<RawChunk> out;
+    size_t p = 8;
+    while (p + 12 <= b.size()) {
+        const uint32_t n = uint32_t(b[p]) | uint32_t(b[p + 1]) << 8 | uint32_t(b[p + 2]) << 16 | uint32_t(b[p + 3]) << 24;
+        out.push_back({std::string(reinterpret_cast<const char*>(&b[p + 4]), 4), {b.begin() + p + 8, b.begin() + p + 8 + n}});
+        p += 12 + n;
+    }
+    return out;
+}
+
+uint32_t crc32(const uint8_t* p, size_t n, uint32_t crc) {
+    crc = ~crc;
+    for (size_t i = 0; i < n; ++i) {
+        crc ^= p[i];
+        for (int k = 0; k < 8; ++k) crc = (crc & 1) ? 0xEDB88320u ^ (crc >> 1) : crc >> 1;
+    }
+    return ~crc;
+}
+
+void put_chunk(std::vector<uint8_t>& out, const std::string& type, const std::vector<uint8_t>& payload) {
+    put32(out, uint32_t(payload.size()));
+    out.insert(out.end(), type.begin(), type.end());
+    out.insert(out.end(), payload.begin(), payload.end());
+    uint32_t crc = crc32(reinterpret_cast<const uint8_t*>(type.data()), 4, 0);
+    crc = crc32(payload.data(), payload.size(), crc);
+    put32(out, crc);
+}
+
+// Reassembles chunks, recomputing indx and IEND (or dropping the index).
+std::vector<uint8_t> assemble(const std::vector<RawChunk>& chunks, bool with_index) {
+    static const uint8_t sig[8] = {0x89, 'S', 'P', 'T', 0x0D, 0x0A, 0x1A, 0x0A};
+    std::vector<uint8_t> out(sig, sig + 8);
+    std::vector<uint8_t> index;
+    uint32_t frames = 0;
+    for (const auto& c : chunks) {
+        if (c.type == "indx" || c.type == "IEND") continue;
+        if (c.type == "FRAM") {
+            put32(index, uint32_t(c.payload[0]) | uint32_t(c.payload[1]) << 8 | uint32_t(c.payload[2]) << 16 | uint32_t(c.payload[3]) << 24);
+            index.push_back(c.payload[4]); index.push_back(0); index.push_back(0); index.push_back(0);
+            const uint64_t off = out.size();
+            put32(index, uint32_t(off)); put32(index, uint32_t(off >> 32));
+            ++frames;
+        }
+        put_chunk(out, c.type, c.payload);
+    }
+    uint64_t index_offset = 0;
+    if (with_index) {
+        std::vector<uint8_t> p;
+        put32(p, frames);
+        p.insert(p.end(), index.begin(), index.end());
+        index_offset = out.size();
+        put_chunk(out, "indx", p);
+    }
+    std::vector<uint8_t> iend;
+    put32(iend, frames); put32(iend, uint32_t(index_offset)); put32(iend, uint32_t(index_offset >> 32));
+    put_chunk(out, "IEND", iend);
+    return out;
+}
+
+bool write_file(const std::string& path, const std::vector<uint8_t>& b) {
+    std::ofstream f(path, std::ios::binary);
+    f.write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
+    return bool(f);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string dir = argc > 1 ? argv[1] : std::string(SPT_SOURCE_DIR) + "/tests/format/golden";
+    std::filesystem::create_directories(dir);
+    std::string manifest =
+        "# Golden conformance files of SPEC.md (format 1.0). Generated by tests/format/make_golden.cpp.\n"
+        "# Each <name>.spt (frame coding 1) has a <name>.stored.spt twin (coding 0) with the same frames.\n"
+        "# live_fnv1a64: FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3) over the\n"
+        "#   canonical stored-mode bytes of the live stroke list after applying the frame: a coding-0\n"
+        "#   key frame body (SPEC.md 6), u32 stroke_count then the stroke records.\n"
+        "# render_fnv1a64: FNV-1a 64 of the rendered RGB8 frame (SPEC.md 8), '-' until the renderer fills it in.\n"
+        "# file frame live_strokes live_fnv1a64 render_fnv1a64\n";
+    std::string readme = "# Golden files\n\nGenerated by `make_golden` (tests/format/make_golden.cpp); hashes in MANIFEST.txt.\n\n"
+                         "| file | content |\n|---|---|\n";
+    for (const auto& c : cases()) {
+        readme += "| " + c.name + ".spt, " + c.name + ".stored.spt | " + c.about + " |\n";
+        for (Coding coding : {Coding::Range, Coding::Stored}) {
+            const std::string file = c.name + (coding == Coding::Stored ? ".stored.spt" : ".spt");
+            const std::string path = dir + "/" + file;
+            WriterOptions o;
+            o.coding = coding;
+            auto w = Writer::create(path, c.stream.info, o);
+            if (!w) { std::cerr << file << ": " << w.error().message << "\n"; return 1; }
+            for (const auto& f : c.stream.frames)
+                if (auto st = (*w)->append(f); !st) { std::cerr << file << ": " << st.error().message << "\n"; return 1; }
+            for (const auto& r : c.stream.info.rois) (void)(*w)->add_roi(r);
+            if (auto st = (*w)->finish(); !st) { std::cerr << file << ": " << st.error().message << "\n"; return 1; }
+            if (c.drop_index || c.unknown_ancillary) {
+                auto chunks = split_chunks(read_bytes(path));
+                if (c.unknown_ancillary) chunks.insert(chunks.begin() + 1, RawChunk{"xtRa", {'s', 'k', 'i', 'p', ' ', 'm', 'e'}});
+                write_file(path, assemble(chunks, !c.drop_index));
+            }
+            // Record the hashes from an independent application of the frames.
+            std::vector<Stroke> live;
+            for (const auto& f : c.stream.frames) {
+                if (auto st = apply_frame(live, f, c.stream.info.header); !st) { std::cerr << st.error().message << "\n"; return 1; }
+                manifest += file + " " + std::to_string(f.index) + " " + std::to_string(live.size()) + " " +
+                            hex64(fnv1a64(canonical_stored_bytes(live))) + " -\n";
+            }
+        }
+    }
+    std::ofstream(dir + "/MANIFEST.txt") << manifest;
+    std::ofstream(dir + "/README.md") << readme;
+    std::cout << "wrote " << dir << "\n";
+    return 0;
+}

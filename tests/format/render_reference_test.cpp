@@ -1,0 +1,223 @@
+// An independent, deliberately slow implementation of SPEC section 8, written from the draft
+// text (format/SPEC.md section 8) without any code shared with format/src: every pixel
+// of the canvas is evaluated for every stroke with the formulas as written (direct floor
+// divisions, 128-bit products where the text allows big integers). The fast renderer must
+// produce identical canvases on thousands of random strokes.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "format/render_test_util.hpp"
+
+namespace {
+
+using namespace spt_test;
+using i64 = int64_t;
+using i128 = __int128;
+
+i64 fdiv(i128 n, i128 d) {  // floor(n / d), any signs
+    i128 q = n / d;
+    if (n % d != 0 && ((n < 0) != (d < 0))) --q;
+    return i64(q);
+}
+
+struct Ref {
+    const spt::Header& h;
+    const std::vector<spt::Template>& t;
+
+    // 8.4 template coverage at (U, V), Q16.
+    int cov_template(const spt::Template& tp, i64 U, i64 V) const {
+        if (U < -131072 || U > 131072 || V < -131072 || V > 131072) return 0;
+        switch (tp.kind) {
+            case spt::TemplateKind::Ellipse: return U * U + V * V <= i64(65536) * 65536 ? 255 : 0;
+            case spt::TemplateKind::Rectangle: return (U >= -65536 && U <= 65536 && V >= -65536 && V <= 65536) ? 255 : 0;
+            case spt::TemplateKind::Triangle: return (U >= -65536 && V >= -65536 && U + V <= 0) ? 255 : 0;
+            case spt::TemplateKind::Bitmap: break;
+        }
+        const i64 w = tp.width, hh = tp.height;
+        const i64 sx = fdiv(i128(U + 65536) * w, 512), sy = fdiv(i128(V + 65536) * hh, 512);
+        if (sx < 0 || sx >= 256 * w || sy < 0 || sy >= 256 * hh) return 0;
+        const i64 qx = sx - 128, qy = sy - 128;
+        const i64 ix = fdiv(qx, 256), iy = fdiv(qy, 256);
+        const i64 fx = qx - 256 * ix, fy = qy - 256 * iy;
+        auto px = [&](i64 i, i64 j) {
+            i = std::min(std::max(i, i64(0)), w - 1);
+            j = std::min(std::max(j, i64(0)), hh - 1);
+            return i64(tp.pixels[size_t(j * w + i)]);
+        };
+        const i64 top = px(ix, iy) * (256 - fx) + px(ix + 1, iy) * fx;
+        const i64 bot = px(ix, iy + 1) * (256 - fx) + px(ix + 1, iy + 1) * fx;
+        return int(fdiv(top * (256 - fy) + bot * fy + 32768, 65536));
+    }
+
+    // Coverage of a stroke at canvas pixel (x, y).
+    int coverage(const spt::Stroke& s, i64 x, i64 y) const {
+        if (s.kind == spt::StrokeKind::Stamp) {
+            const auto& st = s.stamp;
+            const i64 W = h.sets[st.set].width, H = h.sets[st.set].height;
+            const i64 C = h.orientations[st.orient].cos_q14, S = h.orientations[st.orient].sin_q14;
+            const i64 i = x - fdiv(st.x, 16), j = y - fdiv(st.y, 16);
+            const i64 rx = (W * std::abs(C) + H * std::abs(S)) / 32768 + 1;
+            const i64 ry = (W * std::abs(S) + H * std::abs(C)) / 32768 + 1;
+            if (i < -rx || i > rx || j < -ry || j > ry) return 0;
+            const i64 U = fdiv(8 * (i * C + j * S), W), V = fdiv(8 * (j * C - i * S), H);
+            return cov_template(t[st.tmpl], U, V);
+        }
+        if (s.kind == spt::StrokeKind::Affine) {
+            const auto& af = s.affine;
+            const i64 det = i64(af.a) * af.d - i64(af.b) * af.c;
+            if (det == 0) return 0;
+            const i64 X = 16 * x + 8, Y = 16 * y + 8;
+            const i64 ex = std::abs(i64(af.a)) + std::abs(i64(af.b)), ey = std::abs(i64(af.c)) + std::abs(i64(af.d));
+            if (X < af.tx - ex || X > af.tx + ex || Y < af.ty - ey || Y > af.ty + ey) return 0;
+            const i64 dx = X - af.tx, dy = Y - af.ty;
+            const i64 U = fdiv(i128(65536) * (i128(af.d) * dx - i128(af.b) * dy), det);
+            const i64 V = fdiv(i128(65536) * (i128(af.a) * dy - i128(af.c) * dx), det);
+            return cov_template(t[af.tmpl], U, V);
+        }
+        const auto& pts = s.curve.points;
+        const i64 X = 16 * x + 8, Y = 16 * y + 8;
+        for (size_t k = 0; k < pts.size(); ++k) {
+            const auto& p0 = pts[k];
+            const auto& p1 = pts[std::min(k + 1, pts.size() - 1)];
+            if (k + 1 == pts.size() && pts.size() > 1) break;
+            const i64 dx = i64(p1.x) - p0.x, dy = i64(p1.y) - p0.y, qx = X - p0.x, qy = Y - p0.y;
+            const i128 L = i128(dx) * dx + i128(dy) * dy, t = i128(qx) * dx + i128(qy) * dy;
+            i64 T = 0;
+            if (L > 0 && t >= L) T = 1 << 24;
+            else if (L > 0 && t > 0) T = fdiv(t * (1 << 24), L);
+            const i128 ex = i128(256) * qx - fdiv(i128(T) * dx, 65536);
+            const i128 ey = i128(256) * qy - fdiv(i128(T) * dy, 65536);
+            const i128 R = fdiv(i128(p0.width) * (1 << 24) + i128(T) * (i64(p1.width) - i64(p0.width)), 131072);
+            if (ex * ex + ey * ey <= R * R) return 255;
+        }
+        return 0;
+    }
+
+    void draw(spt::Canvas& c, const spt::Stroke& s) const {
+        const spt::Rgba8 col = s.kind == spt::StrokeKind::Stamp ? s.stamp.color
+                             : s.kind == spt::StrokeKind::Affine ? s.affine.color : s.curve.color;
+        for (uint32_t y = 0; y < c.height; ++y)
+            for (uint32_t x = 0; x < c.width; ++x) {
+                const i64 al = (i64(coverage(s, x, y)) * col.a + 127) / 255;
+                uint8_t* p = &c.rgb[(size_t(y) * c.width + x) * 3];
+                const uint8_t src[3] = {col.r, col.g, col.b};
+                for (int k = 0; k < 3; ++k) p[k] = uint8_t((p[k] * (255 - al) + src[k] * al + 127) / 255);
+            }
+    }
+};
+
+// Random strokes of every kind, size, alpha and position, many partly off the canvas.
+std::vector<spt::Stroke> random_strokes(std::mt19937& rng, const spt::Header& h, size_t ntemplates, int n) {
+    auto U = [&](i64 lo, i64 hi) { return std::uniform_int_distribution<i64>(lo, hi)(rng); };
+    const i64 W = h.width * 16, H = h.height * 16;
+    std::vector<spt::Stroke> v;
+    for (int i = 0; i < n; ++i) {
+        const spt::Rgba8 col{uint8_t(U(0, 255)), uint8_t(U(0, 255)), uint8_t(U(0, 255)),
+                             uint8_t(U(0, 3) == 0 ? 255 : U(0, 255))};
+        const int kind = int(U(0, 9));
+        if (kind < 5) {
+            v.push_back(stamp(uint8_t(U(0, i64(h.sets.size()) - 1)), uint8_t(U(0, i64(ntemplates) - 1)),
+                              uint8_t(U(0, i64(h.orientations.size()) - 1)), int32_t(U(-200, W + 200)),
+                              int32_t(U(-200, H + 200)), col));
+        } else if (kind < 8) {
+            const i64 sc = U(0, 3) == 0 ? 600 : 160;
+            int32_t m[4];
+            for (int32_t& e : m) e = int32_t(U(-sc, sc));
+            if (U(0, 20) == 0) { m[2] = m[0] * 2; m[3] = m[1] * 2; }  // singular now and then
+            v.push_back(affine(uint8_t(U(0, i64(ntemplates) - 1)), int32_t(U(-300, W + 300)),
+                               int32_t(U(-300, H + 300)), m[0], m[1], m[2], m[3], col));
+        } else {
+            std::vector<spt::CurvePoint> pts;
+            i64 x = U(-100, W + 100), y = U(-100, H + 100);
+            const int np = int(U(1, 5));
+            for (int k = 0; k < np; ++k) {
+                pts.push_back({int32_t(x), int32_t(y), uint32_t(U(0, 160))});
+                x += U(-300, 300);
+                y += U(-300, 300);
+                if (U(0, 6) == 0) { x = pts.back().x; y = pts.back().y; }  // repeated points
+            }
+            v.push_back(curve(std::move(pts), col));
+        }
+    }
+    return v;
+}
+
+std::vector<spt::Template> test_templates(std::mt19937& rng) {
+    std::vector<spt::Template> t = {analytic(spt::TemplateKind::Ellipse), analytic(spt::TemplateKind::Rectangle),
+                                    analytic(spt::TemplateKind::Triangle)};
+    for (auto [w, hh] : {std::pair{1, 1}, {7, 3}, {16, 16}, {60, 60}}) {
+        std::vector<uint8_t> px(size_t(w * hh));
+        for (auto& p : px) p = uint8_t(rng() % 4 == 0 ? 0 : rng() % 256);
+        t.push_back(bitmap(uint16_t(w), uint16_t(hh), std::move(px)));
+    }
+    return t;
+}
+
+TEST(RenderReference, FastRendererEqualsIndependentReference) {
+    std::mt19937 rng(20240607);
+    const auto templates = test_templates(rng);
+    auto hd = make_header(48, 36, {{40, 17}, {16, 6}, {9, 9}, {4, 1}, {1, 1}, {3, 30}}, 8);
+    hd.background = {12, 200, 77};
+    // A rogue but legal table entry: a bit longer than unit, and negative components.
+    hd.orientations.push_back({-16385, -7});
+    hd.orientations.push_back({11585, -11585});
+    auto r = make_renderer(hd, templates);
+    const Ref ref{hd, templates};
+    int strokes = 0;
+    for (int round = 0; round < 12; ++round) {
+        const auto v = random_strokes(rng, hd, templates.size(), 300);
+        spt::Canvas fast, slow(hd.width, hd.height, hd.background);
+        ASSERT_TRUE(r->render(fast, v).ok());
+        for (size_t i = 0; i < v.size(); ++i) {
+            spt::Canvas before = slow;
+            ref.draw(slow, v[i]);
+            // Per-stroke check pinpoints the first disagreeing stroke.
+            spt::Canvas one = before;
+            ASSERT_TRUE(r->draw(one, v[i]).ok());
+            ASSERT_EQ(one.rgb, slow.rgb) << "round " << round << " stroke " << i << " kind " << int(v[i].kind);
+        }
+        ASSERT_EQ(fast.rgb, slow.rgb);
+        strokes += int(v.size());
+    }
+    EXPECT_EQ(strokes, 3600);
+}
+
+// Stamps too big for the footprint cache (render.hpp: kMaxFootprintBytes) are drawn through
+// their inverse map instead; the pixels must not change.
+TEST(RenderReference, UncachedHugeStampsEqualReference) {
+    std::mt19937 rng(11);
+    const auto templates = test_templates(rng);
+    auto hd = make_header(64, 40, {{4096, 4096}, {4096, 700}, {9, 5}}, 8);
+    auto r = make_renderer(hd, templates);
+    const Ref ref{hd, templates};
+    spt::Canvas slow(hd.width, hd.height, hd.background);
+    std::vector<spt::Stroke> v;
+    for (int i = 0; i < 40; ++i) {
+        const auto U = [&](int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng); };
+        v.push_back(stamp(uint8_t(U(0, 2)), uint8_t(U(0, int64_t(templates.size()) - 1)), uint8_t(U(0, 7)),
+                          int32_t(U(-40000, 40000)), int32_t(U(-40000, 40000)),
+                          {uint8_t(U(0, 255)), uint8_t(U(0, 255)), uint8_t(U(0, 255)), uint8_t(U(1, 255))}));
+        ref.draw(slow, v.back());
+    }
+    spt::Canvas fast;
+    ASSERT_TRUE(r->render(fast, v).ok());
+    EXPECT_EQ(fast.rgb, slow.rgb);
+    EXPECT_LT(r->footprint_cache_bytes(), size_t(32) << 20);  // the 4096 x 4096 ones not stored
+}
+
+TEST(RenderReference, RenderingIsDeterministic) {
+    std::mt19937 rng(7);
+    const auto templates = test_templates(rng);
+    auto hd = make_header(97, 61, {{30, 12}, {8, 4}, {2, 2}}, 16);
+    const auto v = random_strokes(rng, hd, templates.size(), 3000);
+    auto r1 = make_renderer(hd, templates), r2 = make_renderer(hd, templates);
+    spt::Canvas a, b, c;
+    ASSERT_TRUE(r1->render(a, v).ok());
+    ASSERT_TRUE(r2->render(b, v).ok());
+    ASSERT_TRUE(r1->render(c, v).ok());  // warm cache, same answer
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_EQ(a.rgb, c.rgb);
+}
+
+}  // namespace
