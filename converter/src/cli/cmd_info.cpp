@@ -1,13 +1,249 @@
-// spt info (placeholder until implemented)
+// spt info: describe a .spt file (header, frames, strokes, bytes per section and per field).
+#include <cmath>
 #include <cstdio>
+#include <map>
 
+#include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "io/json.hpp"
+#include "io/spt_file.hpp"
+#include "spt/spt.hpp"
 
 namespace spt::cli {
 
-int cmd_info(int, char**) {
-    std::fprintf(stderr, "spt info: not implemented yet\n");
-    return 1;
+namespace {
+
+const char* kind_name(TemplateKind k) {
+    switch (k) {
+        case TemplateKind::Bitmap: return "bitmap";
+        case TemplateKind::Ellipse: return "ellipse";
+        case TemplateKind::Rectangle: return "rectangle";
+        case TemplateKind::Triangle: return "triangle";
+    }
+    return "unknown";
+}
+
+double degrees(const Orientation& o) {
+    return std::atan2(double(o.sin_q14), double(o.cos_q14)) * 180.0 / 3.14159265358979323846;
+}
+
+// Byte counts of the file's sections, from the frame table alone (no decoding).
+struct Sections {
+    uint64_t total = 0, header = 0, frames = 0, strokes = 0, motion = 0, framing = 0, tail = 0;
+};
+
+Sections sections(const Reader& r) {
+    Sections s;
+    s.total = r.file_size();
+    const auto& f = r.frames();
+    s.header = f.empty() ? s.total : f.front().offset;
+    uint64_t end = s.header;
+    for (const auto& e : f) {
+        s.frames += e.chunk_bytes;
+        s.strokes += e.stroke_bytes;
+        s.motion += e.motion_bytes;
+        end = std::max(end, e.offset + e.chunk_bytes);
+    }
+    s.framing = s.frames - std::min(s.frames, s.strokes + s.motion);
+    s.tail = s.total - std::min(s.total, end);
+    return s;
+}
+
+}  // namespace
+
+int cmd_info(int argc, char** argv) {
+    Args args("info", "describe a .spt file: header, frames, strokes, bytes per section",
+              "spt info FILE.spt [--json] [--frames] [--no-fields]");
+    args.positional("FILE.spt", "the file to describe")
+        .flag("json", "print one JSON document on stdout (keys below)")
+        .flag("frames", "list every frame: type, coding, offset, bytes, strokes added/removed/live "
+                        "(decodes the whole file)")
+        .flag("no-fields", "skip the per-field byte breakdown (it decodes every frame)")
+        .epilog(
+            "Sections: header = everything before the first frame (signature, HEAD, templates, "
+            "metadata); strokes / motion = frame payload coding added strokes / removals and "
+            "motion; framing = frame chunk headers and checksums; tail = ROIs, index, end chunk.\n"
+            "Fields: where frame-body bits go (range coding: information cost of each field's "
+            "decisions; stored: exact bytes).\n\n"
+            "JSON keys (stable): file, file_bytes, format_version, complete, has_index, canvas "
+            "{width, height}, fps {num, den, value}, frame_count (header value, null when "
+            "unknown), frames_found, duration_seconds, color, background [r, g, b], sets "
+            "[{width, height}], orientations [{cos_q14, sin_q14, degrees}], templates [{kind, "
+            "name, width, height}], metadata {key: value}, rois [{first_frame, last_frame, x, y, "
+            "w, h}], key_frames [index...], strokes {added, removed, max_live (with --frames)}, "
+            "bytes {total, header, frames, strokes, motion, framing, tail}, fields {name: "
+            "bytes} (absent with --no-fields), warnings [text], and with --frames: frame_list "
+            "[{index, type, coding, offset, bytes, stroke_bytes, motion_bytes, added, removed, "
+            "live}].");
+    if (int rc = args.parse(argc, argv); rc >= 0) return rc;
+    const std::string path = args.pos("FILE.spt");
+    const bool json = args.has("json"), list = args.has("frames"), fields = !args.has("no-fields");
+
+    auto opened = io::open_spt(path);
+    if (!opened) {
+        std::fprintf(stderr, "spt info: %s\n", opened.error().message.c_str());
+        return 1;
+    }
+    Reader& r = **opened;
+    const StreamInfo& info = r.info();
+    const Header& h = info.header;
+    const auto& frames = r.frames();
+    const Sections sec = sections(r);
+
+    uint64_t added = 0, removed = 0;
+    std::vector<uint32_t> keys;
+    for (const auto& f : frames) {
+        added += f.added;
+        removed += f.removed;
+        if (f.type == FrameType::Key) keys.push_back(f.index);
+    }
+    // Live counts need every frame applied; only with --frames.
+    std::vector<uint64_t> live;
+    uint64_t max_live = 0;
+    if (list) {
+        for (size_t i = 0; i < frames.size(); ++i) {
+            auto s = r.strokes_at(i);
+            if (!s) {
+                std::fprintf(stderr, "spt info: %s\n", io::frame_error(r, i, path, s.error()).c_str());
+                return 1;
+            }
+            live.push_back((*s)->size());
+            max_live = std::max<uint64_t>(max_live, (*s)->size());
+        }
+    }
+    FieldStats fs;
+    if (fields) {
+        for (size_t i = 0; i < frames.size(); ++i) {
+            auto s = r.field_stats(i);
+            if (!s) {
+                std::fprintf(stderr, "spt info: %s\n", io::frame_error(r, i, path, s.error()).c_str());
+                return 1;
+            }
+            fs.add(*s);
+        }
+    }
+    const double fps = h.fps.den ? double(h.fps.num) / h.fps.den : 0.0;
+    const char* color = h.color == ColorEncoding::Srgb8 ? "srgb8" : "unknown";
+
+    if (json) {
+        io::JsonWriter j(true);
+        j.obj().kv("file", path).kv("file_bytes", sec.total);
+        j.kv("format_version", std::to_string(h.version_major) + "." + std::to_string(h.version_minor));
+        j.kv("complete", r.complete()).kv("has_index", r.has_index());
+        j.key("canvas").obj().kv("width", h.width).kv("height", h.height).end();
+        j.key("fps").obj().kv("num", h.fps.num).kv("den", h.fps.den).kv("value", fps).end();
+        if (h.frame_count == kUnknownFrameCount) j.key("frame_count").null();
+        else j.kv("frame_count", h.frame_count);
+        j.kv("frames_found", uint64_t(frames.size()));
+        j.kv("duration_seconds", fps > 0 ? double(frames.size()) / fps : 0.0);
+        j.kv("color", color);
+        j.key("background").arr().integer(h.background.r).integer(h.background.g).integer(h.background.b).end();
+        j.key("sets").arr();
+        for (const auto& s : h.sets) j.obj().kv("width", uint32_t(s.width)).kv("height", uint32_t(s.height)).end();
+        j.end().key("orientations").arr();
+        for (const auto& o : h.orientations)
+            j.obj().kv("cos_q14", int(o.cos_q14)).kv("sin_q14", int(o.sin_q14)).kv("degrees", degrees(o)).end();
+        j.end().key("templates").arr();
+        for (const auto& t : info.templates)
+            j.obj().kv("kind", kind_name(t.kind)).kv("name", t.name).kv("width", uint32_t(t.width))
+                .kv("height", uint32_t(t.height)).end();
+        j.end().key("metadata").obj();
+        std::map<std::string, std::string> meta(info.metadata.begin(), info.metadata.end());
+        for (const auto& [k, v] : info.metadata) meta[k] = v;  // last value of a repeated key
+        for (const auto& [k, v] : meta) j.kv(k, v);
+        j.end().key("rois").arr();
+        for (const auto& q : info.rois)
+            j.obj().kv("first_frame", q.first_frame).kv("last_frame", q.last_frame).kv("x", q.x).kv("y", q.y)
+                .kv("w", q.w).kv("h", q.h).end();
+        j.end().key("key_frames").arr();
+        for (auto k : keys) j.uinteger(k);
+        j.end().key("strokes").obj().kv("added", added).kv("removed", removed);
+        if (list) j.kv("max_live", max_live);
+        j.end();
+        j.key("bytes").obj().kv("total", sec.total).kv("header", sec.header).kv("frames", sec.frames)
+            .kv("strokes", sec.strokes).kv("motion", sec.motion).kv("framing", sec.framing).kv("tail", sec.tail).end();
+        if (fields) {
+            j.key("fields").obj();
+            for (size_t i = 0; i < kFieldCount; ++i) j.kv(field_name(Field(i)), fs.bits[i] / 8.0);
+            j.end();
+        }
+        j.key("warnings").arr();
+        for (const auto& w : r.warnings()) j.str(io::describe_error(path, w));
+        j.end();
+        if (list) {
+            j.key("frame_list").arr();
+            for (size_t i = 0; i < frames.size(); ++i) {
+                const auto& f = frames[i];
+                j.obj().kv("index", f.index).kv("type", f.type == FrameType::Key ? "key" : "inter")
+                    .kv("coding", f.coding == Coding::Range ? "range" : "stored").kv("offset", f.offset)
+                    .kv("bytes", f.chunk_bytes).kv("stroke_bytes", f.stroke_bytes).kv("motion_bytes", f.motion_bytes)
+                    .kv("added", f.added).kv("removed", f.removed).kv("live", live[i]).end();
+            }
+            j.end();
+        }
+        j.end();
+        std::printf("%s\n", j.text().c_str());
+        return 0;
+    }
+
+    std::printf("%s: .spt %u.%u, %llu bytes%s%s\n", path.c_str(), h.version_major, h.version_minor,
+                (unsigned long long)sec.total, r.complete() ? "" : ", INCOMPLETE (no end chunk)",
+                r.has_index() ? "" : ", no index");
+    std::printf("canvas      %u x %u, %u/%u fps (%.3f), colour %s, background #%02x%02x%02x\n", h.width,
+                h.height, h.fps.num, h.fps.den, fps, color, h.background.r, h.background.g, h.background.b);
+    std::printf("frames      %zu found", frames.size());
+    if (h.frame_count != kUnknownFrameCount) std::printf(" (header says %u)", h.frame_count);
+    if (fps > 0) std::printf(", %.2f s", double(frames.size()) / fps);
+    std::printf(", %zu key frames\n", keys.size());
+    std::printf("sets        %zu:", h.sets.size());
+    for (const auto& s : h.sets) std::printf(" %ux%u", s.width, s.height);
+    std::printf("\norientations %zu:", h.orientations.size());
+    for (const auto& o : h.orientations) std::printf(" %.1f", degrees(o));
+    std::printf(" deg\ntemplates   %zu:", info.templates.size());
+    for (const auto& t : info.templates) {
+        std::printf(" %s", kind_name(t.kind));
+        if (t.kind == TemplateKind::Bitmap) std::printf(" %ux%u", t.width, t.height);
+        if (!t.name.empty()) std::printf(" \"%s\"", t.name.c_str());
+        std::printf(";");
+    }
+    std::printf("\nstrokes     %llu added, %llu removed", (unsigned long long)added, (unsigned long long)removed);
+    if (list) std::printf(", at most %llu live", (unsigned long long)max_live);
+    std::printf("\n");
+    for (const auto& [k, v] : info.metadata) std::printf("meta        %s = %s\n", k.c_str(), v.c_str());
+    for (const auto& q : info.rois)
+        std::printf("roi         frames %u-%u: %u,%u %ux%u\n", q.first_frame, q.last_frame, q.x, q.y, q.w, q.h);
+    std::printf("key frames ");
+    for (size_t i = 0; i < keys.size() && i < 32; ++i) std::printf(" %u", keys[i]);
+    if (keys.size() > 32) std::printf(" ... (%zu in all)", keys.size());
+    std::printf("\n\nbytes           %12s %8s\n", "bytes", "share");
+    auto row = [&](const char* name, double v) {
+        std::printf("  %-14s %12.0f %7.2f%%\n", name, v, sec.total ? 100.0 * v / double(sec.total) : 0.0);
+    };
+    row("header", double(sec.header));
+    row("strokes", double(sec.strokes));
+    row("motion", double(sec.motion));
+    row("framing", double(sec.framing));
+    row("tail", double(sec.tail));
+    row("total", double(sec.total));
+    if (fields) {
+        std::printf("\nfields (frame bodies)\n");
+        for (size_t i = 0; i < kFieldCount; ++i) row(field_name(Field(i)), fs.bits[i] / 8.0);
+    }
+    if (!frames.empty() && fps > 0)
+        std::printf("\nbit rate    %.1f kbit/s\n", double(sec.total) * 8.0 / 1000.0 / (double(frames.size()) / fps));
+    for (const auto& w : r.warnings()) std::printf("warning: %s\n", io::describe_error(path, w).c_str());
+    if (list) {
+        std::printf("\n%7s %5s %6s %12s %9s %9s %8s %8s %8s\n", "frame", "type", "coding", "offset", "bytes",
+                    "strokesB", "added", "removed", "live");
+        for (size_t i = 0; i < frames.size(); ++i) {
+            const auto& f = frames[i];
+            std::printf("%7u %5s %6s %12llu %9llu %9llu %8u %8u %8llu\n", f.index,
+                        f.type == FrameType::Key ? "key" : "inter", f.coding == Coding::Range ? "range" : "stored",
+                        (unsigned long long)f.offset, (unsigned long long)f.chunk_bytes,
+                        (unsigned long long)f.stroke_bytes, f.added, f.removed, (unsigned long long)live[i]);
+        }
+    }
+    return 0;
 }
 
 }  // namespace spt::cli

@@ -1,13 +1,176 @@
-// spt render (placeholder until implemented)
+// spt render: a .spt file to an image, an image sequence or a preview video.
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "io/image_io.hpp"
+#include "io/progress.hpp"
+#include "io/sequence.hpp"
+#include "io/spt_file.hpp"
+#include "spt/spt.hpp"
 
 namespace spt::cli {
 
-int cmd_render(int, char**) {
-    std::fprintf(stderr, "spt render: not implemented yet\n");
+namespace fs = std::filesystem;
+
+namespace {
+
+int fail(const std::string& msg) {
+    std::fprintf(stderr, "spt render: %s\n", msg.c_str());
     return 1;
+}
+
+std::string lower_ext(const std::string& p) {
+    std::string e = fs::path(p).extension().string();
+    for (auto& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return e;
+}
+
+// A preview video through OpenCV, written under a temporary name and renamed when complete.
+class VideoOut {
+public:
+    bool open(const std::string& path, double fps, uint32_t w, uint32_t h, std::string& err) {
+        path_ = path;
+        const std::string ext = lower_ext(path);
+        tmp_ = path + ".partial" + ext;  // OpenCV picks the container from the extension
+        const int fourcc = ext == ".avi" ? cv::VideoWriter::fourcc('M', 'J', 'P', 'G')
+                                         : cv::VideoWriter::fourcc('m', 'p', '4', 'v');
+        if (!writer_.open(tmp_, cv::CAP_FFMPEG, fourcc, fps > 0 ? fps : 24.0, cv::Size(int(w), int(h)))) {
+            err = path + ": OpenCV cannot create a " + ext + " video here";
+            discard();
+            return false;
+        }
+        return true;
+    }
+    void write(const Canvas& c) {
+        cv::Mat rgb(int(c.height), int(c.width), CV_8UC3, const_cast<uint8_t*>(c.rgb.data()));
+        cv::cvtColor(rgb, bgr_, cv::COLOR_RGB2BGR);
+        writer_.write(bgr_);
+    }
+    bool finish(std::string& err) {
+        writer_.release();
+        std::error_code ec;
+        fs::rename(tmp_, path_, ec);
+        if (ec) {
+            err = path_ + ": cannot rename the finished video into place: " + ec.message();
+            discard();
+            return false;
+        }
+        return true;
+    }
+    void discard() {
+        writer_.release();
+        std::error_code ec;
+        fs::remove(tmp_, ec);
+    }
+private:
+    cv::VideoWriter writer_;
+    std::string path_, tmp_;
+    cv::Mat bgr_;
+};
+
+}  // namespace
+
+int cmd_render(int argc, char** argv) {
+    Args args("render", "render a .spt file to images (PNG, EXR, TIFF, JPEG), a sequence or a video",
+              "spt render FILE.spt -o OUT [--frames RANGE | --frame N] [--start N] [--progress MODE]");
+    args.positional("FILE.spt", "the file to render")
+        .option("output", "OUT",
+                "an image (.png .exr .tif .jpg ...: one frame), a sequence pattern (out.####.png, "
+                "out.%04d.exr, out.@@@.tif) or a video (.mp4 .mov .mkv .avi: a quick preview at the "
+                "file's fps)", 'o')
+        .option("frames", "RANGE", "frames to render, by file frame index: \"A-B\", \"A\", \"1-10,20\", \"0-100x5\" (default: all)")
+        .option("frame", "N", "the frame of a single-image output (default 0)")
+        .option("start", "N", "number the output files from N: file frame i is written as i + N (default 0)")
+        .option("progress", "MODE", io::kProgressHelp, 0, "auto")
+        .epilog("Frames are reached through the index: rendering frames 500-510 decodes from the "
+                "key frame at or before 500 only. PNG, TIFF and JPEG are written 8-bit sRGB; EXR "
+                "half float scene-linear (the inverse of the sRGB curve). Every file is written "
+                "under a temporary name and renamed when complete.");
+    if (int rc = args.parse(argc, argv); rc >= 0) return rc;
+    io::ProgressMode mode;
+    if (!io::parse_progress_mode(args.get("progress"), mode))
+        return args.usage_error("--progress: expected auto, plain, json or none");
+    const std::string path = args.pos("FILE.spt");
+    const std::string out = args.get("output");
+    if (out.empty()) return args.usage_error("missing -o OUT");
+    long start = 0, single = -1;
+    if (!args.get_long("start", start, 0, 999999999) || !args.get_long("frame", single, 0, 0xFFFFFFFEL)) return 2;
+    if (args.has("frame") && args.has("frames")) return args.usage_error("give --frame or --frames, not both");
+    auto range = io::parse_frame_range(args.has("frame") ? args.get("frame") : args.get("frames"));
+    if (!range) return args.usage_error(range.error().message);
+
+    const bool video = io::is_video_file(out);
+    const bool sequence = !video && io::is_sequence_pattern(out);
+    if (!video && !io::is_writable_image_name(sequence ? io::format_frame(out, 0) : out))
+        return args.usage_error("-o " + out + ": unknown image extension (use .png, .exr, .tif, .jpg or a video extension)");
+    if (!sequence && !video && args.has("start")) return args.usage_error("--start needs a sequence pattern in -o");
+
+    auto opened = io::open_spt(path);
+    if (!opened) return fail(opened.error().message);
+    Reader& r = **opened;
+    const auto& frames = r.frames();
+    const Header& h = r.info().header;
+    if (frames.empty()) return fail(path + ": the file holds no frames");
+    const long last = long(frames.size()) - 1;
+
+    std::vector<long> todo;
+    if (!sequence && !video && !args.has("frames")) {
+        todo.push_back(single < 0 ? 0 : single);
+    } else {
+        todo = range->frames_within(0, last);
+    }
+    if (!sequence && !video && todo.size() > 1)
+        return args.usage_error("--frames names " + std::to_string(todo.size()) +
+                                " frames but -o " + out + " has no frame placeholder (####, %04d, @)");
+    for (const auto& [a, b] : range->spans)
+        if (b > last)
+            return fail(path + ": has frames 0-" + std::to_string(last) + "; the range asks for frame " +
+                        std::to_string(b));
+    if (todo.empty() || todo.front() > last)
+        return fail(path + ": has frames 0-" + std::to_string(last) + "; nothing to render in that range");
+
+    auto rc = Renderer::create(h, r.info().templates);
+    if (!rc) return fail(io::describe_error(path, rc.error()));
+    const Renderer& renderer = **rc;
+    Canvas canvas(h.width, h.height, h.background);
+
+    VideoOut vout;
+    std::string err;
+    if (video && !vout.open(out, h.fps.den ? double(h.fps.num) / h.fps.den : 24.0, h.width, h.height, err))
+        return fail(err);
+
+    io::Progress progress(mode, "render", double(todo.size()));
+    size_t done = 0;
+    for (long f : todo) {
+        auto live = r.strokes_at(size_t(f));
+        if (!live) {
+            if (video) vout.discard();
+            return fail(io::frame_error(r, size_t(f), path, live.error()));
+        }
+        Status s = renderer.render(canvas, **live);
+        if (!s) {
+            if (video) vout.discard();
+            return fail(path + ": " + io::frame_place(r, size_t(f)) + ": cannot render: " + s.error().message);
+        }
+        if (video) {
+            vout.write(canvas);
+        } else {
+            const std::string name = sequence ? io::format_frame(out, f + start) : out;
+            Status w = io::write_image(name, canvas);
+            if (!w) return fail(w.error().message);
+        }
+        progress.update(double(++done), "frame " + std::to_string(f));
+    }
+    if (video && !vout.finish(err)) return fail(err);
+    progress.finish(true, std::to_string(done) + " frames");
+    return 0;
 }
 
 }  // namespace spt::cli

@@ -21,20 +21,37 @@ struct Image {
 struct ReadOptions {
     // Alpha (when present) is composited over this colour.
     Rgb8 background{255, 255, 255};
+    // Checked before any pixel is allocated (the RGB8 result alone is 3 bytes per pixel).
+    uint32_t max_side = 32768;
+    uint64_t max_pixels = 1ull << 28;
 };
+
+// The colour transform applied to float input, quoted by --help texts.
+inline constexpr const char* kLinearToSrgbText =
+    "float images (EXR, float TIFF) are taken as scene-linear Rec.709 and converted with "
+    "OpenImageIO's colorconvert \"linear\" -> \"sRGB\" (the sRGB transfer curve, no tone mapping; "
+    "values above 1 clip)";
 
 // Reads PNG, JPEG, TIFF, EXR, ... (anything OpenImageIO reads). 8/16-bit and float data are
 // converted to 8-bit sRGB: float files (EXR, float TIFF) are taken as scene-linear Rec.709 and
 // converted with OpenImageIO's colour management ("linear" -> "sRGB"). 1 channel is gray,
 // 2 gray + alpha, 3 RGB, 4 RGBA; more channels: the first 3 (or 4 when the 4th is alpha).
+// Alpha: integer files are composited in sRGB space (c*a + bg*(1-a), unassociated alpha as PNG
+// stores it); float files are composited in linear light (premultiplied, as EXR stores it),
+// the background being converted to linear first.
 // Errors name the file.
 Result<Image> read_image(const std::string& path, const ReadOptions& opts = {});
 
 // Writes by extension (.png, .exr, .tif, .jpg, ...). EXR is written as half float, linear
 // (the inverse of read_image's transform), so that render output composes in VFX tools.
+// PNG and TIFF are 8-bit, JPEG quality 95. The file is written under a temporary name beside
+// the target and renamed into place, so a failed write never leaves a partial file.
 Status write_image(const std::string& path, uint32_t width, uint32_t height, const uint8_t* rgb);
 inline Status write_image(const std::string& path, const Canvas& c) {
     return write_image(path, c.width, c.height, c.rgb.data());
 }
+
+// True when OpenImageIO has a writer for the file's extension.
+bool is_writable_image_name(const std::string& path);
 
 }  // namespace spt::io

@@ -9,20 +9,27 @@
 
 namespace spt::io {
 
-// "A-B" (inclusive), "A", or a comma list "1-10,20,30-40"; empty = all.
+// "A-B" (inclusive), "A", a comma list "1-10,20,30-40", and steps "1-100x5" (every 5th frame
+// from 1); empty = all. Frame numbers are >= 0.
 struct FrameRange {
     std::vector<std::pair<long, long>> spans;
+    std::vector<long> steps;  // one per span (1 when absent); may be empty = all steps 1
     bool contains(long f) const;
     bool empty() const { return spans.empty(); }
+    long step(size_t span) const { return span < steps.size() ? steps[span] : 1; }
+    // The frames of [lo, hi] the range selects, in the order the spans list them, without
+    // repeats; an empty range selects all of [lo, hi]. At most `max_count` (then truncated).
+    std::vector<long> frames_within(long lo, long hi, size_t max_count = 100000000) const;
 };
 Result<FrameRange> parse_frame_range(const std::string& text);
 
-// True when `name` holds a frame-number placeholder: "####", "#", "@@@", "%04d", or an
-// oiiotool range "1-120#".
+// True when `name` (its file-name part) holds a frame-number placeholder: "####", "#", "@@@",
+// "%04d", "%d", or an oiiotool range "1-120#".
 bool is_sequence_pattern(const std::string& name);
 
 // Expands a pattern to one file name for frame `frame` ("####" -> 4 digits zero-padded, "#"
-// alone -> 4 digits as in oiiotool, "@" -> 1 digit each, "%0Nd" -> N digits).
+// alone -> 4 digits as in oiiotool, "@" -> 1 digit each, "%0Nd" -> N digits). An oiiotool
+// range in front of the placeholder ("1-120#") is dropped from the name.
 std::string format_frame(const std::string& pattern, long frame);
 
 struct SequenceFile {
@@ -31,8 +38,9 @@ struct SequenceFile {
 };
 
 // Lists the input frames of a sequence: a pattern with a placeholder (frames found on disk, or
-// the pattern's own range "1-120#"), or a folder (its image files in name order, numbered 0..),
-// filtered by `range`. An error names the pattern when nothing matches.
+// the pattern's own range "1-120#", whose files must all exist), or a folder (its image files
+// in name order, numbered 0..), filtered by `range`. An error names the pattern when nothing
+// matches.
 Result<std::vector<SequenceFile>> list_sequence(const std::string& pattern_or_dir,
                                                 const FrameRange& range = {});
 
