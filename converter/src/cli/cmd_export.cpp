@@ -1,13 +1,86 @@
-// spt export (placeholder until implemented)
+// spt export: a .spt file as the JSON stroke list, or as SVG (one file per frame).
 #include <cstdio>
+#include <string>
 
+#include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "io/sequence.hpp"
+#include "io/spt_file.hpp"
+#include "spt_import/export.hpp"
 
 namespace spt::cli {
 
-int cmd_export(int, char**) {
-    std::fprintf(stderr, "spt export: not implemented yet\n");
+namespace {
+
+bool ends_with(std::string s, const std::string& suffix) {
+    for (auto& c : s) c = char(std::tolower((unsigned char)c));
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+int fail(const std::string& msg) {
+    std::fprintf(stderr, "spt export: %s\n", msg.c_str());
     return 1;
+}
+
+}  // namespace
+
+int cmd_export(int argc, char** argv) {
+    Args args("export", "write a .spt file as SVG (one per frame) or as a JSON stroke list",
+              "spt export IN.spt -o OUT.json | -o OUT.svg | -o OUT.####.svg [--frames RANGE]");
+    args.positional("IN.spt", "the .spt file to export")
+        .option("output", "OUT", "OUT.json: the JSON stroke list (importers/README.md), every frame as stored; "
+                                 "OUT.svg: one SVG per frame, with #### (or %04d) in the name for several frames", 'o')
+        .option("frames", "RANGE", "SVG only: the frames to export (\"0-10,20\"; 0-based)")
+        .epilog("The JSON output imports back (spt import) into the same .spt file. In the SVG, each stamp or\n"
+                "affine stroke is its template (ellipse/rect/polygon, or a bitmap as a PNG mask) placed with\n"
+                "transform=\"matrix(...)\"; curves are round-capped outlines; the result renders in a browser\n"
+                "close to spt render (browsers anti-alias edges; spt samples pixel centres).");
+    if (int rc = args.parse(argc, argv); rc >= 0) return rc;
+    const std::string in = args.pos("IN.spt"), out = args.get("output");
+    if (out.empty()) return args.usage_error("missing -o OUT.json or -o OUT.svg");
+    const bool json = ends_with(out, ".json"), svg = ends_with(out, ".svg");
+    if (!json && !svg) return args.usage_error("the output must end in .json or .svg: " + out);
+    if (json && args.has("frames")) return args.usage_error("--frames applies to SVG output only (JSON holds every frame as stored)");
+    io::FrameRange range;
+    if (args.has("frames")) {
+        auto r = io::parse_frame_range(args.get("frames"));
+        if (!r) return args.usage_error(r.error().message);
+        range = *r;
+    }
+
+    auto reader = io::open_spt(in);
+    if (!reader) return fail(reader.error().message);
+    Reader& r = **reader;
+    const size_t n = r.frames().size();
+
+    if (json) {
+        import::Document doc;
+        doc.info = r.info();
+        for (size_t i = 0; i < n; ++i) {
+            auto f = r.read_frame(i);
+            if (!f) return fail(io::frame_place(r, i) + ": " + io::describe_error(in, f.error()));
+            doc.frames.push_back(std::move(*f));
+        }
+        if (Status s = import::write_file_atomic(out, import::export_json(doc)); !s) return fail(s.error().message);
+        return 0;
+    }
+
+    std::vector<size_t> picked;
+    for (size_t i = 0; i < n; ++i)
+        if (range.empty() || range.contains(long(i))) picked.push_back(i);
+    if (picked.empty()) return fail(in + ": no frame in the requested range (the file has " + std::to_string(n) + ")");
+    const bool pattern = io::is_sequence_pattern(out);
+    if (picked.size() > 1 && !pattern)
+        return args.usage_error(std::to_string(picked.size()) + " frames need a frame number placeholder in the output name (OUT.####.svg), or --frames N");
+    for (size_t i : picked) {
+        auto live = r.strokes_at(i);
+        if (!live) return fail(io::frame_place(r, i) + ": " + io::describe_error(in, live.error()));
+        auto text = import::export_svg(r.info(), **live);
+        if (!text) return fail(in + ": " + text.error().message);
+        const std::string path = pattern ? io::format_frame(out, long(i)) : out;
+        if (Status s = import::write_file_atomic(path, *text); !s) return fail(s.error().message);
+    }
+    return 0;
 }
 
 }  // namespace spt::cli

@@ -1,0 +1,488 @@
+// Importer for the documented spt JSON stroke list (schema: importers/README.md), which is also
+// what `spt export -o X.json` writes.
+#include <cmath>
+
+#include "spt_import/codec.hpp"
+#include "spt_import/importer.hpp"
+#include "spt_import/json.hpp"
+#include "spt_import/shapes.hpp"
+
+namespace spt::import {
+
+namespace {
+
+using json::Type;
+using json::Value;
+
+// Reads typed fields with errors that name the file, the line and the element.
+class Ctx {
+public:
+    Ctx(const std::string& src, const Limits& lim) : src_(src), lim_(lim) {}
+    const Limits& lim() const { return lim_; }
+    Error err(const Value& v, const std::string& what) const {
+        return make_error(Code::Corrupt, src_ + ":" + std::to_string(v.line) + ": " + what);
+    }
+    bool need(const Value& v, Type t, const std::string& name, Error& e) const {
+        if (v.type == t) return true;
+        e = err(v, name + " must be a" + (t == Type::Array || t == Type::Object ? "n " : " ") + json::type_name(t) +
+                       ", not a " + json::type_name(v.type));
+        return false;
+    }
+    bool num(const Value& v, const std::string& name, double lo, double hi, double& out, Error& e) const {
+        if (!need(v, Type::Number, name, e)) return false;
+        if (!(v.number >= lo && v.number <= hi)) {
+            e = err(v, name + " = " + v.text + " is outside " + fmt(lo) + ".." + fmt(hi));
+            return false;
+        }
+        out = v.number;
+        return true;
+    }
+    bool integer(const Value& v, const std::string& name, int64_t lo, int64_t hi, int64_t& out, Error& e) const {
+        double d;
+        if (!num(v, name, double(lo), double(hi), d, e)) return false;
+        if (d != std::floor(d)) { e = err(v, name + " must be an integer"); return false; }
+        out = int64_t(d);
+        return true;
+    }
+    // Pixels to Q4, rounding; the range is the spec's position range.
+    bool q4(const Value& v, const std::string& name, double max_px, int32_t& out, Error& e) const {
+        double d;
+        if (!num(v, name, -max_px, max_px, d, e)) return false;
+        out = int32_t(std::nearbyint(d * 16));
+        return true;
+    }
+    static std::string fmt(double d) {
+        if (d == std::floor(d) && std::fabs(d) < 1e15) return std::to_string(int64_t(d));
+        return std::to_string(d);
+    }
+private:
+    const std::string& src_;
+    const Limits& lim_;
+};
+
+constexpr double kPosPx = double(1 << 20);   // 2^24 Q4
+constexpr double kAxisPx = double(1 << 12);  // 2^16 Q4
+
+bool read_color(const Ctx& c, const Value& obj, const std::string& where, Rgba8& out, Error& e) {
+    const Value* col = obj.find("color");
+    if (!col) { e = c.err(obj, where + ": missing \"color\""); return false; }
+    if (col->is_string()) {
+        std::string_view s = col->text;
+        Rgb8 rgb;
+        bool none = false;
+        uint8_t alpha = 255;
+        if (s.size() == 9 && s[0] == '#') {
+            double dummy;
+            (void)dummy;
+            auto hv = [](char ch) { return ch >= '0' && ch <= '9' ? ch - '0' : ch >= 'a' && ch <= 'f' ? ch - 'a' + 10 : ch >= 'A' && ch <= 'F' ? ch - 'A' + 10 : -1; };
+            int h1 = hv(s[7]), h2 = hv(s[8]);
+            if (h1 < 0 || h2 < 0) { e = c.err(*col, where + ": bad colour \"" + col->text + "\""); return false; }
+            alpha = uint8_t(h1 * 16 + h2);
+            s = s.substr(0, 7);
+        }
+        if (!parse_color(s, rgb, none) || none) { e = c.err(*col, where + ": bad colour \"" + col->text + "\""); return false; }
+        out = {rgb.r, rgb.g, rgb.b, alpha};
+    } else {
+        if (!c.need(*col, Type::Array, where + ".color", e)) return false;
+        if (col->items.size() != 3 && col->items.size() != 4) { e = c.err(*col, where + ".color must have 3 or 4 entries"); return false; }
+        int64_t v[4] = {0, 0, 0, 255};
+        for (size_t i = 0; i < col->items.size(); ++i)
+            if (!c.integer(col->items[i], where + ".color[" + std::to_string(i) + "]", 0, 255, v[i], e)) return false;
+        out = {uint8_t(v[0]), uint8_t(v[1]), uint8_t(v[2]), uint8_t(v[3])};
+    }
+    if (const Value* op = obj.find("opacity")) {
+        double o;
+        if (!c.num(*op, where + ".opacity", 0, 1, o, e)) return false;
+        out.a = uint8_t(std::nearbyint(out.a * o));
+    }
+    return true;
+}
+
+bool read_template_ref(const Ctx& c, const Value& obj, const std::string& where, const std::vector<Template>& T,
+                       uint8_t& out, Error& e) {
+    const Value* t = obj.find("template");
+    if (!t) { e = c.err(obj, where + ": missing \"template\""); return false; }
+    if (t->is_string()) {
+        for (size_t i = 0; i < T.size(); ++i)
+            if (T[i].name == t->text) { out = uint8_t(i); return true; }
+        const char* kinds[] = {"bitmap", "ellipse", "rectangle", "triangle"};
+        for (size_t i = 0; i < T.size(); ++i)
+            if (t->text == kinds[size_t(T[i].kind)]) { out = uint8_t(i); return true; }
+        e = c.err(*t, where + ": no template named \"" + t->text + "\"");
+        return false;
+    }
+    int64_t id;
+    if (!c.integer(*t, where + ".template", 0, int64_t(T.size()) - 1, id, e)) return false;
+    out = uint8_t(id);
+    return true;
+}
+
+bool read_point(const Ctx& c, const Value& v, const std::string& name, size_t n, double* out, Error& e) {
+    if (!c.need(v, Type::Array, name, e)) return false;
+    if (v.items.size() != n) { e = c.err(v, name + " must have " + std::to_string(n) + " numbers"); return false; }
+    for (size_t i = 0; i < n; ++i)
+        if (!c.num(v.items[i], name + "[" + std::to_string(i) + "]", -kPosPx, kPosPx, out[i], e)) return false;
+    return true;
+}
+
+const Value* field(const Ctx& c, const Value& obj, const char* key, const std::string& where, Error& e) {
+    const Value* v = obj.find(key);
+    if (!v) e = c.err(obj, where + ": missing \"" + key + "\"");
+    return v;
+}
+
+bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const StreamInfo& info,
+                 std::vector<Stroke>& out, ImportReport& rep, Error& e) {
+    if (!c.need(s, Type::Object, where, e)) return false;
+    const Value* type = field(c, s, "type", where, e);
+    if (!type) return false;
+    if (!c.need(*type, Type::String, where + ".type", e)) return false;
+    const std::string& t = type->text;
+    Rgba8 color;
+    if (t == "stamp") {
+        StampStroke st;
+        int64_t v;
+        const Value* f;
+        if (!(f = field(c, s, "set", where, e)) || !c.integer(*f, where + ".set", 0, int64_t(info.header.sets.size()) - 1, v, e)) return false;
+        st.set = uint8_t(v);
+        if (!read_template_ref(c, s, where, info.templates, st.tmpl, e)) return false;
+        if (!(f = field(c, s, "orient", where, e)) || !c.integer(*f, where + ".orient", 0, int64_t(info.header.orientations.size()) - 1, v, e)) return false;
+        st.orient = uint8_t(v);
+        if (!(f = field(c, s, "x", where, e)) || !c.q4(*f, where + ".x", kPosPx, st.x, e)) return false;
+        if (!(f = field(c, s, "y", where, e)) || !c.q4(*f, where + ".y", kPosPx, st.y, e)) return false;
+        if (!read_color(c, s, where, st.color, e)) return false;
+        out.push_back(Stroke::make_stamp(st));
+        ++rep.strokes;
+    } else if (t == "affine") {
+        AffineStroke a;
+        if (!read_template_ref(c, s, where, info.templates, a.tmpl, e)) return false;
+        const char* keys[6] = {"tx", "ty", "a", "b", "c", "d"};
+        int32_t* dst[6] = {&a.tx, &a.ty, &a.a, &a.b, &a.c, &a.d};
+        for (int i = 0; i < 6; ++i) {
+            const Value* f = field(c, s, keys[i], where, e);
+            if (!f || !c.q4(*f, where + "." + keys[i], i < 2 ? kPosPx : kAxisPx, *dst[i], e)) return false;
+        }
+        if (int64_t(a.a) * a.d - int64_t(a.b) * a.c == 0) { e = c.err(s, where + ": affine matrix is not invertible"); return false; }
+        if (!read_color(c, s, where, a.color, e)) return false;
+        out.push_back(Stroke::make_affine(a));
+        ++rep.strokes;
+    } else if (t == "shape") {
+        uint8_t tmpl;
+        if (!read_template_ref(c, s, where, info.templates, tmpl, e)) return false;
+        double ctr[2], size[2], angle = 0;
+        const Value* f;
+        if (!(f = field(c, s, "center", where, e)) || !read_point(c, *f, where + ".center", 2, ctr, e)) return false;
+        if (!(f = field(c, s, "size", where, e)) || !read_point(c, *f, where + ".size", 2, size, e)) return false;
+        if ((f = s.find("angle")) && !c.num(*f, where + ".angle", -1e6, 1e6, angle, e)) return false;
+        if (!read_color(c, s, where, color, e)) return false;
+        ++rep.shapes;
+        StrokeSink sink(out, rep);
+        sink.affine(tmpl, Mat2x3::translate(ctr[0], ctr[1]) * Mat2x3::rotate_deg(angle) * Mat2x3::scale(size[0] / 2, size[1] / 2), color);
+    } else if (t == "polygon") {
+        const Value* f = field(c, s, "points", where, e);
+        if (!f || !c.need(*f, Type::Array, where + ".points", e)) return false;
+        if (f->items.size() > 4096) { e = c.err(*f, where + ".points: more than 4096 vertices"); return false; }
+        std::vector<Point> pts;
+        for (size_t i = 0; i < f->items.size(); ++i) {
+            double p[2];
+            if (!read_point(c, f->items[i], where + ".points[" + std::to_string(i) + "]", 2, p, e)) return false;
+            pts.push_back({p[0], p[1]});
+        }
+        if (!read_color(c, s, where, color, e)) return false;
+        TemplateIds ids;
+        // Polygons need the analytic templates; find them by kind.
+        bool have[4] = {false, false, false, false};
+        for (size_t i = 0; i < info.templates.size(); ++i) {
+            auto k = size_t(info.templates[i].kind);
+            if (have[k]) continue;
+            have[k] = true;
+            if (k == 2) ids.rectangle = uint8_t(i);
+            if (k == 3) ids.triangle = uint8_t(i);
+        }
+        if (!have[2] || !have[3]) { e = c.err(s, where + ": polygons need rectangle and triangle templates"); return false; }
+        StrokeSink(out, rep, ids).polygon(pts, color);
+    } else if (t == "curve") {
+        CurveStroke cv;
+        if (!read_color(c, s, where, cv.color, e)) return false;
+        const Value* f = field(c, s, "points", where, e);
+        if (!f || !c.need(*f, Type::Array, where + ".points", e)) return false;
+        if (f->items.empty() || f->items.size() > c.lim().max_curve_points) {
+            e = c.err(*f, where + ".points: 1.." + std::to_string(c.lim().max_curve_points) + " points required");
+            return false;
+        }
+        for (size_t i = 0; i < f->items.size(); ++i) {
+            const std::string pn = where + ".points[" + std::to_string(i) + "]";
+            const Value& p = f->items[i];
+            if (!c.need(p, Type::Array, pn, e)) return false;
+            if (p.items.size() != 3) { e = c.err(p, pn + " must be [x, y, width]"); return false; }
+            CurvePoint q;
+            int32_t w;
+            if (!c.q4(p.items[0], pn + ".x", kPosPx, q.x, e) || !c.q4(p.items[1], pn + ".y", kPosPx, q.y, e) ||
+                !c.q4(p.items[2], pn + ".width", kAxisPx, w, e))
+                return false;
+            if (w < 0) { e = c.err(p, pn + ": width must not be negative"); return false; }
+            q.width = uint32_t(w);
+            cv.points.push_back(q);
+        }
+        out.push_back(Stroke::make_curve(std::move(cv)));
+        ++rep.strokes;
+    } else {
+        e = c.err(*type, where + ": unknown stroke type \"" + t + "\" (stamp, affine, shape, polygon, curve)");
+        return false;
+    }
+    if (t != "shape" && t != "polygon") ++rep.shapes;
+    return true;
+}
+
+bool read_templates(const Ctx& c, const Value* tv, std::vector<Template>& T, Error& e) {
+    if (!tv) { T = default_templates(); return true; }
+    if (!c.need(*tv, Type::Array, "templates", e)) return false;
+    if (tv->items.size() > c.lim().max_templates) { e = c.err(*tv, "more than " + std::to_string(c.lim().max_templates) + " templates"); return false; }
+    for (size_t i = 0; i < tv->items.size(); ++i) {
+        const Value& t = tv->items[i];
+        const std::string where = "templates[" + std::to_string(i) + "]";
+        if (!c.need(t, Type::Object, where, e)) return false;
+        Template out;
+        const Value* kind = field(c, t, "kind", where, e);
+        if (!kind || !c.need(*kind, Type::String, where + ".kind", e)) return false;
+        if (kind->text == "ellipse") out.kind = TemplateKind::Ellipse;
+        else if (kind->text == "rectangle") out.kind = TemplateKind::Rectangle;
+        else if (kind->text == "triangle") out.kind = TemplateKind::Triangle;
+        else if (kind->text == "bitmap") out.kind = TemplateKind::Bitmap;
+        else { e = c.err(*kind, where + ": unknown template kind \"" + kind->text + "\""); return false; }
+        if (const Value* n = t.find("name")) {
+            if (!c.need(*n, Type::String, where + ".name", e)) return false;
+            if (n->text.size() > 255) { e = c.err(*n, where + ".name longer than 255 bytes"); return false; }
+            out.name = n->text;
+        }
+        if (out.kind == TemplateKind::Bitmap) {
+            int64_t w, h;
+            const Value* f;
+            const int64_t side = c.lim().max_template_side;
+            if (!(f = field(c, t, "width", where, e)) || !c.integer(*f, where + ".width", 1, side, w, e)) return false;
+            if (!(f = field(c, t, "height", where, e)) || !c.integer(*f, where + ".height", 1, side, h, e)) return false;
+            out.width = uint16_t(w);
+            out.height = uint16_t(h);
+            if (const Value* b = t.find("base64")) {
+                if (!c.need(*b, Type::String, where + ".base64", e)) return false;
+                auto d = base64_decode(b->text);
+                if (!d) { e = c.err(*b, where + ".base64 is not valid base64"); return false; }
+                out.pixels = std::move(*d);
+            } else if (const Value* sv = t.find("samples")) {
+                if (!c.need(*sv, Type::Array, where + ".samples", e)) return false;
+                if (sv->items.size() != size_t(w * h)) { e = c.err(*sv, where + ".samples must hold width*height values"); return false; }
+                for (size_t k = 0; k < sv->items.size(); ++k) {
+                    int64_t v;
+                    if (!c.integer(sv->items[k], where + ".samples[" + std::to_string(k) + "]", 0, 255, v, e)) return false;
+                    out.pixels.push_back(uint8_t(v));
+                }
+            } else { e = c.err(t, where + ": a bitmap template needs \"base64\" or \"samples\""); return false; }
+            if (out.pixels.size() != size_t(w * h)) {
+                e = c.err(t, where + ": " + std::to_string(out.pixels.size()) + " samples for a " + std::to_string(w) + "x" + std::to_string(h) + " bitmap");
+                return false;
+            }
+        }
+        T.push_back(std::move(out));
+    }
+    return true;
+}
+
+bool read_header(const Ctx& c, const Value& root, Header& h, Error& e) {
+    const Value* canvas = field(c, root, "canvas", "document", e);
+    if (!canvas || !c.need(*canvas, Type::Object, "canvas", e)) return false;
+    int64_t w, hh;
+    const Value* f;
+    if (!(f = field(c, *canvas, "width", "canvas", e)) || !c.integer(*f, "canvas.width", 1, c.lim().max_width, w, e)) return false;
+    if (!(f = field(c, *canvas, "height", "canvas", e)) || !c.integer(*f, "canvas.height", 1, c.lim().max_height, hh, e)) return false;
+    if (uint64_t(w) * uint64_t(hh) > c.lim().max_pixels) { e = c.err(*canvas, "canvas has more pixels than the limit"); return false; }
+    Rgb8 bg{255, 255, 255};
+    if ((f = canvas->find("background"))) {
+        Value tmp;
+        tmp.type = Type::Object;
+        tmp.line = f->line;
+        tmp.members.emplace_back("color", *f);
+        Rgba8 c4;
+        if (!read_color(c, tmp, "canvas.background", c4, e)) return false;
+        bg = {c4.r, c4.g, c4.b};
+    }
+    h = default_header(uint32_t(w), uint32_t(hh), bg);
+    if ((f = canvas->find("fps"))) {
+        if (f->is_array()) {
+            int64_t n, d;
+            if (f->items.size() != 2) { e = c.err(*f, "canvas.fps must be a number or [num, den]"); return false; }
+            if (!c.integer(f->items[0], "canvas.fps[0]", 1, 0xFFFFFFFF, n, e) || !c.integer(f->items[1], "canvas.fps[1]", 1, 0xFFFFFFFF, d, e)) return false;
+            h.fps = {uint32_t(n), uint32_t(d)};
+        } else {
+            int64_t n;
+            if (!c.integer(*f, "canvas.fps", 1, 0xFFFFFFFF, n, e)) return false;
+            h.fps = {uint32_t(n), 1};
+        }
+    }
+    if ((f = root.find("sets"))) {
+        if (!c.need(*f, Type::Array, "sets", e)) return false;
+        if (f->items.empty() || f->items.size() > 16) { e = c.err(*f, "sets must hold 1..16 entries"); return false; }
+        h.sets.clear();
+        for (size_t i = 0; i < f->items.size(); ++i) {
+            const Value& s = f->items[i];
+            const std::string n = "sets[" + std::to_string(i) + "]";
+            if (!c.need(s, Type::Array, n, e)) return false;
+            if (s.items.size() != 2) { e = c.err(s, n + " must be [width, height]"); return false; }
+            int64_t sw, sh;
+            if (!c.integer(s.items[0], n + "[0]", 1, 4096, sw, e) || !c.integer(s.items[1], n + "[1]", 1, 4096, sh, e)) return false;
+            h.sets.push_back({uint16_t(sw), uint16_t(sh)});
+        }
+    }
+    if ((f = root.find("orientations"))) {
+        if (f->is_number()) {
+            int64_t n;
+            if (!c.integer(*f, "orientations", 1, 64, n, e)) return false;
+            h.orientations = default_orientations(int(n));
+        } else {
+            if (!c.need(*f, Type::Array, "orientations", e)) return false;
+            if (f->items.empty() || f->items.size() > 64) { e = c.err(*f, "orientations must hold 1..64 entries"); return false; }
+            h.orientations.clear();
+            for (size_t i = 0; i < f->items.size(); ++i) {
+                const Value& o = f->items[i];
+                const std::string n = "orientations[" + std::to_string(i) + "]";
+                if (!c.need(o, Type::Array, n, e)) return false;
+                if (o.items.size() != 2) { e = c.err(o, n + " must be [cos_q14, sin_q14]"); return false; }
+                int64_t co, si;
+                if (!c.integer(o.items[0], n + "[0]", -16384, 16384, co, e) || !c.integer(o.items[1], n + "[1]", -16384, 16384, si, e)) return false;
+                if (co * co + si * si > (int64_t(1) << 28) + (1 << 16)) { e = c.err(o, n + " is longer than unit length"); return false; }
+                h.orientations.push_back({int16_t(co), int16_t(si)});
+            }
+        }
+    }
+    return true;
+}
+
+bool read_frame(const Ctx& c, const Value& fv, size_t index, const StreamInfo& info, Frame& fr, ImportReport& rep, Error& e) {
+    const std::string where = "frames[" + std::to_string(index) + "]";
+    if (!c.need(fv, Type::Object, where, e)) return false;
+    fr.index = uint32_t(index);
+    if (const Value* t = fv.find("type")) {
+        if (!c.need(*t, Type::String, where + ".type", e)) return false;
+        if (t->text == "key") fr.type = FrameType::Key;
+        else if (t->text == "inter") fr.type = FrameType::Inter;
+        else { e = c.err(*t, where + ".type must be \"key\" or \"inter\""); return false; }
+    }
+    if (fr.type == FrameType::Inter && index == 0) { e = c.err(fv, where + ": the first frame must be a key frame"); return false; }
+    if (const Value* r = fv.find("removed")) {
+        if (fr.type != FrameType::Inter) { e = c.err(*r, where + ".removed is only allowed in inter frames"); return false; }
+        if (!c.need(*r, Type::Array, where + ".removed", e)) return false;
+        for (size_t i = 0; i < r->items.size(); ++i) {
+            int64_t v;
+            if (!c.integer(r->items[i], where + ".removed[" + std::to_string(i) + "]", 0, 0xFFFFFFFE, v, e)) return false;
+            if (!fr.removed.empty() && uint32_t(v) <= fr.removed.back()) { e = c.err(r->items[i], where + ".removed must be strictly increasing"); return false; }
+            fr.removed.push_back(uint32_t(v));
+        }
+    }
+    if (const Value* m = fv.find("motion")) {
+        if (fr.type != FrameType::Inter) { e = c.err(*m, where + ".motion is only allowed in inter frames"); return false; }
+        if (!c.need(*m, Type::Object, where + ".motion", e)) return false;
+        int64_t bs;
+        const Value* f;
+        if (!(f = field(c, *m, "block_size", where + ".motion", e)) || !c.integer(*f, where + ".motion.block_size", 8, 256, bs, e)) return false;
+        fr.motion.block_size = uint16_t(bs);
+        fr.motion.cols = uint16_t((info.header.width + bs - 1) / bs);
+        fr.motion.rows = uint16_t((info.header.height + bs - 1) / bs);
+        if (!(f = field(c, *m, "vectors", where + ".motion", e)) || !c.need(*f, Type::Array, where + ".motion.vectors", e)) return false;
+        if (f->items.size() != size_t(fr.motion.cols) * fr.motion.rows) {
+            e = c.err(*f, where + ".motion.vectors must hold cols*rows = " + std::to_string(size_t(fr.motion.cols) * fr.motion.rows) + " [dx, dy] pairs");
+            return false;
+        }
+        for (size_t i = 0; i < f->items.size(); ++i) {
+            const Value& v = f->items[i];
+            const std::string n = where + ".motion.vectors[" + std::to_string(i) + "]";
+            if (!c.need(v, Type::Array, n, e)) return false;
+            if (v.items.size() != 2) { e = c.err(v, n + " must be [dx, dy]"); return false; }
+            int32_t dx, dy;
+            if (!c.q4(v.items[0], n + "[0]", 2047.9375, dx, e) || !c.q4(v.items[1], n + "[1]", 2047.9375, dy, e)) return false;
+            fr.motion.vectors.emplace_back(int16_t(dx), int16_t(dy));
+        }
+    }
+    const Value* strokes = fv.find("strokes");
+    if (strokes) {
+        if (!c.need(*strokes, Type::Array, where + ".strokes", e)) return false;
+        if (strokes->items.size() > c.lim().max_strokes_per_frame) { e = c.err(*strokes, where + ": more strokes than the limit"); return false; }
+        for (size_t i = 0; i < strokes->items.size(); ++i)
+            if (!read_stroke(c, strokes->items[i], where + ".strokes[" + std::to_string(i) + "]", info, fr.added, rep, e)) return false;
+    }
+    return true;
+}
+
+bool sniff(const std::string& path, std::string_view head) {
+    auto p = head.find("\"spt-strokes\"");
+    (void)path;
+    return p != std::string_view::npos;
+}
+
+Result<Document> load(const std::string& path, std::string_view text, const ImportOptions& opts) {
+    auto root = json::parse(text, path);
+    if (!root) return root.error();
+    Ctx c(path, opts.limits);
+    Error e;
+    const Value& r = *root;
+    if (!c.need(r, Type::Object, "the document", e)) return e;
+    const Value* fmt = r.find("format");
+    if (!fmt || !fmt->is_string() || fmt->text != "spt-strokes")
+        return c.err(fmt ? *fmt : r, "not an spt stroke list (\"format\": \"spt-strokes\" expected)");
+    int64_t version = 0;
+    const Value* ver = field(c, r, "version", "document", e);
+    if (!ver || !c.integer(*ver, "version", 0, 1 << 30, version, e)) return e;
+    if (version != 1) return c.err(*ver, "stroke list version " + std::to_string(version) + " is not supported (this reader knows 1)");
+    Document doc;
+    if (!read_header(c, r, doc.info.header, e)) return e;
+    if (!read_templates(c, r.find("templates"), doc.info.templates, e)) return e;
+    if (const Value* m = r.find("metadata")) {
+        if (!c.need(*m, Type::Object, "metadata", e)) return e;
+        for (const auto& [k, v] : m->members) {
+            if (!c.need(v, Type::String, "metadata." + k, e)) return e;
+            doc.info.metadata.emplace_back(k, v.text);
+        }
+    }
+    if (const Value* rois = r.find("rois")) {
+        if (!c.need(*rois, Type::Array, "rois", e)) return e;
+        for (size_t i = 0; i < rois->items.size(); ++i) {
+            const Value& v = rois->items[i];
+            const std::string n = "rois[" + std::to_string(i) + "]";
+            if (!c.need(v, Type::Array, n, e)) return e;
+            if (v.items.size() != 6) return c.err(v, n + " must be [first_frame, last_frame, x, y, w, h]");
+            int64_t x[6];
+            for (int k = 0; k < 6; ++k)
+                if (!c.integer(v.items[size_t(k)], n + "[" + std::to_string(k) + "]", 0, 0xFFFFFFFF, x[k], e)) return e;
+            doc.info.rois.push_back({uint32_t(x[0]), uint32_t(x[1]), uint32_t(x[2]), uint32_t(x[3]), uint32_t(x[4]), uint32_t(x[5])});
+        }
+    }
+    const Value* frames = r.find("frames");
+    const Value* strokes = r.find("strokes");
+    if (frames && strokes) return c.err(*strokes, "give either \"frames\" or a top-level \"strokes\", not both");
+    if (strokes) {
+        Frame fr;
+        Value wrapper;
+        wrapper.type = Type::Object;
+        wrapper.line = strokes->line;
+        wrapper.members.emplace_back("strokes", *strokes);
+        if (!read_frame(c, wrapper, 0, doc.info, fr, doc.report, e)) return e;
+        doc.frames.push_back(std::move(fr));
+    } else {
+        if (!frames) return c.err(r, "missing \"frames\"");
+        if (!c.need(*frames, Type::Array, "frames", e)) return e;
+        if (frames->items.empty()) return c.err(*frames, "frames is empty");
+        for (size_t i = 0; i < frames->items.size(); ++i) {
+            Frame fr;
+            if (!read_frame(c, frames->items[i], i, doc.info, fr, doc.report, e)) return e;
+            doc.frames.push_back(std::move(fr));
+        }
+    }
+    if (opts.background) doc.info.header.background = *opts.background;
+    if (opts.fps) doc.info.header.fps = *opts.fps;
+    if (Status s = validate(doc, path, opts.limits); !s) return s.error();
+    return doc;
+}
+
+}  // namespace
+
+extern const Importer kStrokesJsonImporter = {"spt-json", "the documented spt JSON stroke list (importers/README.md)", sniff, load};
+
+}  // namespace spt::import

@@ -1,0 +1,354 @@
+// Importer for the SVG that shape-approximation tools write (fogleman/primitive, geometrize):
+// rect, circle, ellipse, polygon, polyline, line under nested transforms, with fill,
+// fill-opacity, opacity and a background rect. Paths, text and gradients are rejected with a
+// message naming the element and line (see importers/README.md).
+#include <algorithm>
+#include <cmath>
+
+#include "spt_import/importer.hpp"
+#include "spt_import/shapes.hpp"
+#include "spt_import/xml.hpp"
+
+namespace spt::import {
+
+namespace {
+
+struct Style {
+    Rgb8 fill{0, 0, 0};
+    bool fill_none = false;
+    double fill_opacity = 1, opacity = 1;
+    Rgb8 stroke{0, 0, 0};
+    bool stroke_none = true;
+    double stroke_opacity = 1, stroke_width = 1;
+};
+
+class SvgReader {
+public:
+    SvgReader(const std::string& src, const ImportOptions& o) : src_(src), opts_(o) {}
+
+    Result<Document> run(std::string_view text) {
+        auto root = xml::parse(text, src_);
+        if (!root) return root.error();
+        if (root->local_name() != "svg") return err(*root, "the root element is <" + root->name + ">, not <svg>");
+        Mat2x3 base;
+        if (!canvas(*root, base)) return e_;
+        doc_.info.templates = default_templates();
+        doc_.frames.resize(1);
+        Style st;
+        if (!style(*root, st)) return e_;
+        if (!children(*root, base, st, 0)) return e_;
+        doc_.report.background_stated = background_found_;
+        if (opts_.background) doc_.info.header.background = *opts_.background;
+        if (opts_.fps) doc_.info.header.fps = *opts_.fps;
+        if (Status s = validate(doc_, src_, opts_.limits); !s) return s.error();
+        return std::move(doc_);
+    }
+
+private:
+    const std::string& src_;
+    const ImportOptions& opts_;
+    Document doc_;
+    Error e_;
+    bool any_stroke_ = false;  // a background rect is only recognised before the first stroke
+    bool background_found_ = false;
+
+    Error err(const xml::Element& el, const std::string& what) {
+        return make_error(Code::Corrupt, src_ + ":" + std::to_string(el.line) + ": <" + el.name + ">: " + what);
+    }
+    bool fail(const xml::Element& el, const std::string& what) { e_ = err(el, what); return false; }
+
+    // A length: a number, optionally with "px" (other units and percentages are not supported).
+    bool length(const xml::Element& el, const char* name, double& out, bool required, double dflt = 0) {
+        const xml::Attribute* a = el.attr(name);
+        if (!a) {
+            if (required) return fail(el, std::string("missing attribute ") + name);
+            out = dflt;
+            return true;
+        }
+        std::string_view v = a->value;
+        while (!v.empty() && v.back() == ' ') v.remove_suffix(1);
+        if (v.size() > 2 && v.substr(v.size() - 2) == "px") v.remove_suffix(2);
+        if (!parse_number(v, out)) return fail(el, std::string("attribute ") + name + "=\"" + a->value + "\" is not a number (units other than px are not supported)");
+        return true;
+    }
+
+    // Numbers separated by whitespace and/or commas ("1,2 3-4" is 1, 2, 3, -4 as SVG allows).
+    bool numbers(const xml::Element& el, std::string_view s, std::vector<double>& out, const char* what) {
+        size_t i = 0;
+        while (i < s.size()) {
+            while (i < s.size() && (s[i] == ' ' || s[i] == ',' || s[i] == '\t' || s[i] == '\n' || s[i] == '\r')) ++i;
+            if (i >= s.size()) break;
+            size_t b = i;
+            if (s[i] == '+' || s[i] == '-') ++i;
+            while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
+            if (i < s.size() && s[i] == '.') { ++i; while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i; }
+            if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+                size_t k = i + 1;
+                if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+                if (k < s.size() && std::isdigit((unsigned char)s[k])) { i = k; while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i; }
+            }
+            double v;
+            if (i == b || !parse_number(s.substr(b, i - b), v)) return fail(el, std::string("bad number in ") + what + " near \"" + std::string(s.substr(b, 12)) + "\"");
+            out.push_back(v);
+            if (out.size() > 2 * 65536) return fail(el, std::string(what) + " has too many numbers");
+        }
+        return true;
+    }
+
+    bool transform(const xml::Element& el, Mat2x3& m) {
+        const xml::Attribute* a = el.attr("transform");
+        if (!a) return true;
+        std::string_view s = a->value;
+        size_t i = 0;
+        Mat2x3 t;
+        for (;;) {
+            while (i < s.size() && (std::isspace((unsigned char)s[i]) || s[i] == ',')) ++i;
+            if (i >= s.size()) break;
+            size_t b = i;
+            while (i < s.size() && std::isalpha((unsigned char)s[i])) ++i;
+            std::string_view fn = s.substr(b, i - b);
+            while (i < s.size() && std::isspace((unsigned char)s[i])) ++i;
+            if (i >= s.size() || s[i] != '(') return fail(el, "bad transform \"" + a->value + "\"");
+            size_t close = s.find(')', i);
+            if (close == std::string_view::npos) return fail(el, "unterminated transform \"" + a->value + "\"");
+            std::vector<double> v;
+            if (!numbers(el, s.substr(i + 1, close - i - 1), v, "transform")) return false;
+            i = close + 1;
+            auto argc_ok = [&](std::initializer_list<size_t> ok) {
+                for (size_t n : ok) if (v.size() == n) return true;
+                return false;
+            };
+            Mat2x3 f;
+            if (fn == "matrix" && argc_ok({6})) f = {v[0], v[1], v[2], v[3], v[4], v[5]};
+            else if (fn == "translate" && argc_ok({1, 2})) f = Mat2x3::translate(v[0], v.size() > 1 ? v[1] : 0);
+            else if (fn == "scale" && argc_ok({1, 2})) f = Mat2x3::scale(v[0], v.size() > 1 ? v[1] : v[0]);
+            else if (fn == "rotate" && argc_ok({1, 3})) {
+                f = Mat2x3::rotate_deg(v[0]);
+                if (v.size() == 3) f = Mat2x3::translate(v[1], v[2]) * f * Mat2x3::translate(-v[1], -v[2]);
+            } else if (fn == "skewX" && argc_ok({1})) f = {1, 0, std::tan(v[0] * M_PI / 180), 1, 0, 0};
+            else if (fn == "skewY" && argc_ok({1})) f = {1, std::tan(v[0] * M_PI / 180), 0, 1, 0, 0};
+            else return fail(el, "unsupported transform " + std::string(fn) + " with " + std::to_string(v.size()) + " arguments");
+            t = t * f;
+        }
+        m = m * t;
+        return true;
+    }
+
+    bool canvas(const xml::Element& root, Mat2x3& base) {
+        double w = 0, h = 0;
+        std::vector<double> vb;
+        if (const xml::Attribute* a = root.attr("viewBox")) {
+            if (!numbers(root, a->value, vb, "viewBox")) return false;
+            if (vb.size() != 4 || !(vb[2] > 0) || !(vb[3] > 0)) return fail(root, "viewBox must be \"min-x min-y width height\" with positive size");
+        }
+        const bool has_w = root.attr("width") && root.attr("width")->value.find('%') == std::string::npos;
+        const bool has_h = root.attr("height") && root.attr("height")->value.find('%') == std::string::npos;
+        if (has_w && !length(root, "width", w, true)) return false;
+        if (has_h && !length(root, "height", h, true)) return false;
+        if (!has_w) w = vb.empty() ? 0 : vb[2];
+        if (!has_h) h = vb.empty() ? 0 : vb[3];
+        if (!(w >= 1) || !(h >= 1)) return fail(root, "the canvas size is missing (width/height or viewBox) or below 1 px");
+        if (w > opts_.limits.max_width || h > opts_.limits.max_height || w * h > double(opts_.limits.max_pixels))
+            return fail(root, "canvas " + std::to_string(int64_t(w)) + "x" + std::to_string(int64_t(h)) + " is above the limits");
+        const uint32_t W = uint32_t(std::lround(w)), H = uint32_t(std::lround(h));
+        doc_.info.header = default_header(W, H, Rgb8{255, 255, 255});
+        if (!vb.empty()) {
+            // preserveAspectRatio="none" semantics: each axis scaled on its own. Tools write
+            // viewBoxes with the canvas's aspect ratio, where this equals the default.
+            base = Mat2x3::scale(W / vb[2], H / vb[3]) * Mat2x3::translate(-vb[0], -vb[1]);
+        }
+        return true;
+    }
+
+    bool opacity_value(const xml::Element& el, const std::string& name, std::string_view v, double& out) {
+        bool pct = !v.empty() && v.back() == '%';
+        if (pct) v.remove_suffix(1);
+        if (!parse_number(v, out)) return fail(el, name + "=\"" + std::string(v) + "\" is not a number");
+        if (pct) out /= 100;
+        out = std::clamp(out, 0.0, 1.0);
+        return true;
+    }
+
+    bool property(const xml::Element& el, const std::string& name, std::string_view v, Style& st) {
+        while (!v.empty() && std::isspace((unsigned char)v.front())) v.remove_prefix(1);
+        while (!v.empty() && std::isspace((unsigned char)v.back())) v.remove_suffix(1);
+        if (v == "inherit") return true;
+        if (name == "fill" || name == "stroke") {
+            Rgb8 c;
+            bool none;
+            if (!parse_color(v, c, none)) return fail(el, name + "=\"" + std::string(v) + "\": unsupported colour (gradients and patterns are not imported)");
+            if (name == "fill") { st.fill = c; st.fill_none = none; }
+            else { st.stroke = c; st.stroke_none = none; }
+        } else if (name == "fill-opacity") return opacity_value(el, name, v, st.fill_opacity);
+        else if (name == "stroke-opacity") return opacity_value(el, name, v, st.stroke_opacity);
+        else if (name == "opacity") {
+            double o;
+            if (!opacity_value(el, name, v, o)) return false;
+            st.opacity *= o;  // group opacity folded into each child (exact for one child)
+        } else if (name == "stroke-width") {
+            std::string_view n = v;
+            if (n.size() > 2 && n.substr(n.size() - 2) == "px") n.remove_suffix(2);
+            if (!parse_number(n, st.stroke_width) || st.stroke_width < 0) return fail(el, "bad stroke-width \"" + std::string(v) + "\"");
+        }
+        return true;
+    }
+
+    bool style(const xml::Element& el, Style& st) {
+        static const char* props[] = {"fill", "fill-opacity", "opacity", "stroke", "stroke-opacity", "stroke-width"};
+        for (const char* p : props)
+            if (const xml::Attribute* a = el.attr(p))
+                if (!property(el, p, a->value, st)) return false;
+        if (const xml::Attribute* a = el.attr("style")) {
+            // CSS declarations override presentation attributes.
+            std::string_view s = a->value;
+            while (!s.empty()) {
+                size_t semi = s.find(';');
+                std::string_view decl = s.substr(0, semi);
+                s = semi == std::string_view::npos ? std::string_view() : s.substr(semi + 1);
+                size_t colon = decl.find(':');
+                if (colon == std::string_view::npos) continue;
+                std::string_view k = decl.substr(0, colon);
+                while (!k.empty() && std::isspace((unsigned char)k.front())) k.remove_prefix(1);
+                while (!k.empty() && std::isspace((unsigned char)k.back())) k.remove_suffix(1);
+                if (!property(el, std::string(k), decl.substr(colon + 1), st)) return false;
+            }
+        }
+        if (st.opacity < 1 && !el.children.empty()) {
+            size_t shapes = 0;
+            for (const auto& c : el.children) shapes += c.local_name() != "title" && c.local_name() != "desc";
+            if (shapes > 1) doc_.report.note("group opacity applied to each shape of the group (overlaps inside the group differ)");
+        }
+        return true;
+    }
+
+    static uint8_t alpha(double o) { return uint8_t(std::lround(std::clamp(o, 0.0, 1.0) * 255)); }
+
+    Rgba8 fill_color(const Style& st) const {
+        return {st.fill.r, st.fill.g, st.fill.b, alpha(st.fill_opacity * st.opacity)};
+    }
+
+    bool count_ok(const xml::Element& el) {
+        if (doc_.frames[0].added.size() >= opts_.limits.max_strokes_per_frame) return fail(el, "more shapes than the stroke limit");
+        return true;
+    }
+
+    // Outline strokes of closed shapes are not in the stroke model: say so once.
+    void stroke_note(const Style& st) {
+        if (!st.stroke_none && st.stroke_width > 0 && st.stroke_opacity * st.opacity > 0)
+            doc_.report.note("outline strokes of filled shapes ignored (only lines and polylines become curves)");
+    }
+
+    bool shape(const xml::Element& el, const Mat2x3& m, const Style& st) {
+        if (!count_ok(el)) return false;
+        auto& out = doc_.frames[0].added;
+        StrokeSink sink(out, doc_.report);
+        const std::string_view n = el.local_name();
+        const Rgba8 col = fill_color(st);
+        if (n == "rect") {
+            double x, y, w, h;
+            if (!length(el, "x", x, false) || !length(el, "y", y, false) || !length(el, "width", w, true) || !length(el, "height", h, true)) return false;
+            if (w < 0 || h < 0) return fail(el, "negative width or height");
+            if (el.attr("rx") || el.attr("ry")) doc_.report.note("rounded rectangle corners (rx, ry) ignored");
+            stroke_note(st);
+            if (st.fill_none || w == 0 || h == 0) return true;
+            // A first, opaque, axis-aligned rect covering the canvas is the background colour.
+            if (!any_stroke_ && col.a == 255 && m.b == 0 && m.c == 0) {
+                double x0, y0, x1, y1;
+                m.apply(x, y, x0, y0);
+                m.apply(x + w, y + h, x1, y1);
+                const Header& hd = doc_.info.header;
+                if (std::min(x0, x1) <= 0 && std::min(y0, y1) <= 0 && std::max(x0, x1) >= hd.width && std::max(y0, y1) >= hd.height) {
+                    doc_.info.header.background = st.fill;
+                    background_found_ = true;
+                    return true;
+                }
+            }
+            ++doc_.report.shapes;
+            sink.rect(m, x, y, w, h, col);
+        } else if (n == "circle" || n == "ellipse") {
+            double cx, cy, rx, ry;
+            if (!length(el, "cx", cx, false) || !length(el, "cy", cy, false)) return false;
+            if (n == "circle") {
+                if (!length(el, "r", rx, true)) return false;
+                ry = rx;
+            } else if (!length(el, "rx", rx, true) || !length(el, "ry", ry, true)) return false;
+            if (rx < 0 || ry < 0) return fail(el, "negative radius");
+            stroke_note(st);
+            if (st.fill_none || rx == 0 || ry == 0) return true;
+            ++doc_.report.shapes;
+            sink.ellipse(m, cx, cy, rx, ry, col);
+        } else if (n == "polygon" || n == "polyline" || n == "line") {
+            std::vector<double> v;
+            if (n == "line") {
+                double x1, y1, x2, y2;
+                if (!length(el, "x1", x1, false) || !length(el, "y1", y1, false) || !length(el, "x2", x2, false) || !length(el, "y2", y2, false)) return false;
+                v = {x1, y1, x2, y2};
+            } else {
+                const xml::Attribute* a = el.attr("points");
+                if (!a) return fail(el, "missing attribute points");
+                if (!numbers(el, a->value, v, "points")) return false;
+                if (v.size() % 2) return fail(el, "points has an odd count of numbers");
+            }
+            std::vector<Point> pts;
+            for (size_t i = 0; i + 1 < v.size(); i += 2) {
+                Point p;
+                m.apply(v[i], v[i + 1], p.x, p.y);
+                pts.push_back(p);
+            }
+            if (n == "polygon" || (n == "polyline" && !st.fill_none && st.stroke_none)) {
+                if (n == "polygon") stroke_note(st);
+                if (!st.fill_none) sink.polygon(pts, col);
+            } else if (!st.stroke_none) {
+                // Stroke width scales with the transform's mean scale (exact for similarity maps).
+                const double scale = std::sqrt(std::fabs(m.a * m.d - m.b * m.c));
+                const Rgba8 sc{st.stroke.r, st.stroke.g, st.stroke.b, alpha(st.stroke_opacity * st.opacity)};
+                sink.polyline(pts, st.stroke_width * scale, sc);
+                doc_.report.note("lines drawn with round caps and joins");
+            }
+        }
+        if (!out.empty()) any_stroke_ = true;
+        return true;
+    }
+
+    bool children(const xml::Element& parent, const Mat2x3& m, const Style& st, int depth) {
+        for (const auto& c : parent.children) {
+            const std::string_view n = c.local_name();
+            if (n == "title" || n == "desc" || n == "metadata" || n == "defs" || n == "style") {
+                if (n == "style" || n == "defs") doc_.report.note("<" + std::string(n) + "> content ignored");
+                continue;
+            }
+            Style cs = st;
+            Mat2x3 cm = m;
+            if (!transform(c, cm) || !style(c, cs)) return false;
+            if (n == "g" || n == "a" || n == "svg") {
+                if (n == "svg") doc_.report.note("nested <svg> treated as a group (its viewport is ignored)");
+                if (!children(c, cm, cs, depth + 1)) return false;
+            } else if (n == "rect" || n == "circle" || n == "ellipse" || n == "polygon" || n == "polyline" || n == "line") {
+                if (!shape(c, cm, cs)) return false;
+            } else {
+                return fail(c, "unsupported element (importable: g, rect, circle, ellipse, polygon, polyline, line)");
+            }
+        }
+        return true;
+    }
+};
+
+bool sniff(const std::string& path, std::string_view head) {
+    if (path.size() >= 4) {
+        std::string ext = path.substr(path.size() - 4);
+        for (auto& ch : ext) ch = char(std::tolower((unsigned char)ch));
+        if (ext == ".svg") return true;
+    }
+    return head.find("<svg") != std::string_view::npos;
+}
+
+Result<Document> load(const std::string& path, std::string_view text, const ImportOptions& opts) {
+    SvgReader r(path, opts);
+    return r.run(text);
+}
+
+}  // namespace
+
+extern const Importer kSvgImporter = {"svg", "SVG of shape painters (primitive, geometrize): rect, circle, ellipse, polygon, line", sniff, load};
+
+}  // namespace spt::import

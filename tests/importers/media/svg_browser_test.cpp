@@ -1,0 +1,115 @@
+// `spt export -o X.svg` renders in a real browser (headless Chromium) close to `spt render`.
+// Skips when chromium or the spt tool is missing. Prints the PSNR it measures.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "io/image_io.hpp"
+#include "spt_import/evaluate.hpp"
+#include "spt_import/importer.hpp"
+
+using namespace spt;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kChromium = "/usr/bin/chromium";
+
+fs::path work_dir(const std::string& name) {
+    fs::path d = fs::temp_directory_path() / ("spt_browser_" + std::to_string(::getpid()) + "_" + name);
+    fs::create_directories(d);
+    return d;
+}
+
+// Exports `doc` through the spt tool, screenshots it in Chromium, returns the PSNR against
+// spt::Renderer's rendering of the same frame.
+double browser_psnr(const import::Document& doc, const std::string& name) {
+    const fs::path d = work_dir(name);
+    const std::string spt = (d / "in.spt").string(), svg = (d / "out.svg").string(), png = (d / "shot.png").string();
+    auto w = import::write_document(doc, spt);
+    EXPECT_TRUE(w.ok()) << (w.ok() ? "" : w.error().message);
+    const std::string exp = std::string(SPT_TOOL) + " export '" + spt + "' -o '" + svg + "'";
+    EXPECT_EQ(std::system(exp.c_str()), 0) << exp;
+    // A wrapper page with no margins shows the SVG at its pixel size at the origin.
+    std::ofstream(d / "page.html") << "<!DOCTYPE html><html><body style=\"margin:0\"><img src=\"out.svg\" style=\"display:block\"></body></html>";
+    const auto& h = doc.info.header;
+    const std::string cmd = std::string(kChromium) +
+                            " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking"
+                            " --disable-component-update --disable-sync --user-data-dir='" + (d / "profile").string() +
+                            "' --screenshot='" + png + "' --window-size=" + std::to_string(std::max(h.width, 800u)) + "," + std::to_string(std::max(h.height, 600u)) +
+                            " --hide-scrollbars --default-background-color=00000000 'file://" + (d / "page.html").string() +
+                            "' >/dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    auto shot = io::read_image(png);
+    EXPECT_TRUE(shot.ok()) << (shot.ok() ? "" : shot.error().message);
+    if (!shot.ok()) return 0;
+    auto ref = import::render_frame(doc, doc.frames.size() - 1);
+    EXPECT_TRUE(ref.ok());
+    // Headless Chromium has a minimum window size: the window is at least 800x600 and the
+    // painting is its top-left corner.
+    if (!ref.ok() || shot->width < h.width || shot->height < h.height) {
+        ADD_FAILURE() << "screenshot is " << shot->width << "x" << shot->height;
+        return 0;
+    }
+    std::vector<uint8_t> crop;
+    for (uint32_t y = 0; y < h.height; ++y) {
+        const uint8_t* row = shot->rgb.data() + size_t(y) * shot->width * 3;
+        crop.insert(crop.end(), row, row + size_t(h.width) * 3);
+    }
+    std::error_code ec;
+    fs::remove_all(d, ec);
+    return import::psnr_rgb8(crop.data(), ref->rgb.data(), size_t(h.width) * h.height);
+}
+
+bool have_tools() { return fs::exists(kChromium) && std::string(SPT_TOOL).size() > 0 && fs::exists(SPT_TOOL); }
+
+}  // namespace
+
+TEST(SvgInBrowser, ShapePaintingMatchesRenderer) {
+    if (!have_tools()) GTEST_SKIP() << "needs " << kChromium << " and the spt tool";
+    const std::string f = std::string(SPT_MEDIA_DIR) + "/foreign/coffee-primitive-ellipses.svg";
+    if (!fs::exists(f)) GTEST_SKIP() << "media missing: " << f;
+    auto doc = import::import_path(f, "");
+    ASSERT_TRUE(doc.ok()) << doc.error().message;
+    const double p = browser_psnr(*doc, "shapes");
+    std::printf("chromium vs spt render, primitive ellipses: PSNR %.2f dB\n", p);
+    EXPECT_GE(p, 30.0);  // edges differ: browsers anti-alias, spt samples pixel centres
+}
+
+TEST(SvgInBrowser, BitmapStampsAndCurvesMatchRenderer) {
+    if (!have_tools()) GTEST_SKIP() << "needs " << kChromium << " and the spt tool";
+    import::Document d;
+    d.info.header = import::default_header(160, 120, {240, 235, 220});
+    d.info.header.sets = {{40, 12}, {16, 6}};
+    d.info.templates = import::default_templates();
+    Template bm;  // a soft-edged bristle mark
+    bm.kind = TemplateKind::Bitmap;
+    bm.width = 32; bm.height = 8;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const double u = (x + 0.5) / 16 - 1, v = (y + 0.5) / 4 - 1;
+            bm.pixels.push_back(uint8_t(std::max(0.0, 1 - u * u - v * v) * 255));
+        }
+    d.info.templates.push_back(bm);
+    Frame f;
+    uint32_t seed = 1;
+    auto rnd = [&](uint32_t n) { seed = seed * 1664525u + 1013904223u; return (seed >> 8) % n; };
+    for (int i = 0; i < 120; ++i) {
+        StampStroke s;
+        s.set = uint8_t(rnd(2)); s.tmpl = 3; s.orient = uint8_t(rnd(8));
+        s.x = int32_t(rnd(160 * 16)); s.y = int32_t(rnd(120 * 16));
+        s.color = {uint8_t(rnd(256)), uint8_t(rnd(256)), uint8_t(rnd(256)), uint8_t(128 + rnd(128))};
+        f.added.push_back(Stroke::make_stamp(s));
+    }
+    CurveStroke c;
+    c.color = {20, 40, 160, 160};
+    c.points = {{160, 160, 64}, {800, 400, 32}, {1600, 1200, 96}, {2400, 300, 48}};
+    f.added.push_back(Stroke::make_curve(c));
+    d.frames.push_back(f);
+    const double p = browser_psnr(d, "stamps");
+    std::printf("chromium vs spt render, bitmap stamps and a curve: PSNR %.2f dB\n", p);
+    EXPECT_GE(p, 30.0);
+}
