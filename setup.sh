@@ -36,7 +36,7 @@ case "$mode" in
     install_pkgs "${core_pkgs[@]}"
     build OFF
     mkdir -p out
-    "$build/bin/spt" paint samples/coffee-320.png -o out/demo.spt --seed 1 \
+    "$build/bin/spt" paint samples/coffee-320.png -o out/demo.spt --seed 1 --target-psnr 28 \
         --preview out/demo.png --side-by-side out/demo-side-by-side.png --progress plain
     "$build/bin/spt" info out/demo.spt
     echo "setup: wrote out/demo.spt and out/demo-side-by-side.png (source | painting)"

@@ -1,13 +1,189 @@
-// spt paint (placeholder until implemented)
+// spt paint: an image to a .spt painting. Options are parsed into PaintCommandOptions
+// (paint_options.hpp) so that the video encoder can take the same struct; a sequence or video
+// input is routed to paint_sequence(), which the video path will fill in.
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
 
 #include "cli/commands.hpp"
+#include "cli/paint_options.hpp"
+#include "cli/paint_progress.hpp"
+#include "io/image_io.hpp"
+#include "io/sequence.hpp"
+#include "io/template_loader.hpp"
+#include "paint/painter.hpp"
+#include "spt/render.hpp"
+#include "spt/version.hpp"
+#include "spt/writer.hpp"
+#include "video/video_paint.hpp"
 
 namespace spt::cli {
 
-int cmd_paint(int, char**) {
-    std::fprintf(stderr, "spt paint: not implemented yet\n");
+namespace {
+
+int fail(const std::string& msg) {
+    std::fprintf(stderr, "spt paint: %s\n", msg.c_str());
     return 1;
+}
+
+// Image sequences and videos: not painted by this command yet (the video encoder plugs in here).
+// Sequences and videos go to the video encoder (converter/src/video), with the same painting
+// options as a still.
+int paint_sequence(const PaintCommandOptions& o) {
+    if (!o.preview.empty() || !o.side_by_side.empty())
+        return fail("--preview and --side-by-side are for still images; render a sequence with "
+                    "'spt render " + o.output + " -o frame.####.png'");
+    if (!o.set_sizes.empty())
+        return fail("--set-sizes is not supported for sequences yet; use --sets N");
+    video::VideoPaintOptions v;
+    v.input = o.input;
+    v.output = o.output;
+    v.frames = o.frames;
+    v.fps = o.fps;
+    v.skip_bad_frames = o.skip_bad_frames;
+    v.keyframe_interval = o.keyframe_interval;
+    v.roi_file = o.roi_file;
+    v.cut_threshold = o.cut_threshold;
+    if (!video::parse_flow_method(o.flow, v.flow))
+        return fail("--flow: unknown method '" + o.flow + "' (dis-ultrafast, dis-fast, dis-medium, farneback)");
+    v.block_size = o.block_size;
+    v.max_inter_strokes = o.max_inter_strokes;
+    v.paint = o.paint;
+    v.paint.rois.clear();  // --roi rectangles apply to every frame; --roi-file ones per frame range
+    for (size_t i = 0; i < o.cli_roi_count && i < o.rois.size(); ++i) v.paint.rois.push_back(o.rois[i].rect);
+    v.sets = o.sets;
+    v.background = o.background;
+    v.stored_coding = o.stored;
+    if (!o.templates_dir.empty()) {
+        auto t = io::load_templates(o.templates_dir);
+        if (!t) return fail(t.error().message);
+        v.templates = std::move(t.value());
+    }
+    io::Progress progress(o.progress, "paint", 0);
+    return video::run_video_paint(v, progress);
+}
+
+Status write_side_by_side(const std::string& path, const io::Image& src, const Canvas& painted) {
+    const uint32_t w = src.width, h = src.height;
+    std::vector<uint8_t> both(size_t(2) * w * h * 3);
+    for (uint32_t y = 0; y < h; ++y) {
+        std::copy_n(src.rgb.data() + size_t(y) * w * 3, size_t(w) * 3, both.data() + size_t(y) * 2 * w * 3);
+        std::copy_n(painted.row(y), size_t(w) * 3, both.data() + (size_t(y) * 2 * w + w) * 3);
+    }
+    return io::write_image(path, 2 * w, h, both.data());
+}
+
+int paint_still(const PaintCommandOptions& o) {
+    const auto t0 = std::chrono::steady_clock::now();
+    io::ReadOptions ro;
+    ro.background = o.background;
+    auto img = io::read_image(o.input, ro);
+    if (!img) return fail(img.error().message);
+    const uint32_t W = img->width, H = img->height;
+
+    std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;
+    std::vector<Template> templates;
+    if (o.templates_dir.empty()) {
+        templates = paint::default_templates();
+    } else {
+        auto t = io::load_templates(o.templates_dir);
+        if (!t) return fail(t.error().message);
+        templates = std::move(t.value());
+    }
+    paint::PaintSetup setup = paint::make_setup(W, H, o.background, std::move(sets), std::move(templates));
+
+    paint::PaintOptions po = o.paint;
+    po.rois.clear();
+    StreamInfo info;
+    for (const RoiSpec& r : o.rois) {
+        if (r.first_frame > 0) continue;  // a still is frame 0
+        if (int64_t(r.rect.x) >= W || int64_t(r.rect.y) >= H)
+            return fail("region of interest " + std::to_string(r.rect.x) + "," + std::to_string(r.rect.y) + "," +
+                        std::to_string(r.rect.w) + "," + std::to_string(r.rect.h) + " lies outside the " +
+                        std::to_string(W) + "x" + std::to_string(H) + " image");
+        po.rois.push_back(r.rect);
+        Roi roi;
+        roi.first_frame = roi.last_frame = 0;
+        roi.x = uint32_t(r.rect.x);
+        roi.y = uint32_t(r.rect.y);
+        roi.w = uint32_t(std::min<int64_t>(r.rect.w, int64_t(W) - r.rect.x));
+        roi.h = uint32_t(std::min<int64_t>(r.rect.h, int64_t(H) - r.rect.y));
+        info.rois.push_back(roi);
+    }
+
+    auto renderer = Renderer::create(setup.header, setup.templates);
+    if (!renderer) return fail("cannot set up the renderer: " + renderer.error().message);
+
+    Canvas canvas(W, H, o.background);
+    std::vector<Stroke> strokes;
+    PaintProgress progress(o.progress, po.max_strokes, po.target_psnr, int(setup.header.sets.size()));
+    const paint::ImageView model{W, H, img->rgb.data()};
+    const paint::PaintStats st = paint::paint(
+        model, canvas, **renderer, setup, po, strokes, nullptr,
+        [&](uint64_t n, int set, double db) { progress.update(n, set, db); return true; });
+    const double paint_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    info.header = setup.header;
+    info.templates = setup.templates;
+    info.metadata = {
+        {"software", std::string("spt ") + library_version()},
+        {"source", std::filesystem::path(o.input).filename().string()},
+        {"painter.seed", std::to_string(o.paint.seed)},
+        {"painter.options", o.canonical()},
+    };
+    WriterOptions wo;
+    wo.coding = o.stored ? Coding::Stored : Coding::Range;
+    auto writer = Writer::create(o.output, info, wo);
+    if (!writer) {
+        progress.finish(false, st.strokes, st.psnr, writer.error().message);
+        return fail(writer.error().message);
+    }
+    Frame frame;
+    frame.index = 0;
+    frame.type = FrameType::Key;
+    frame.added = std::move(strokes);
+    Status s = (*writer)->append(frame);
+    if (s) s = (*writer)->finish();
+    if (!s) {
+        (*writer)->abort();
+        progress.finish(false, st.strokes, st.psnr, s.error().message);
+        return fail(o.output + ": " + s.error().message);
+    }
+    const uint64_t bytes = (*writer)->stats().total_bytes;
+
+    if (!o.preview.empty()) {
+        if (Status p = io::write_image(o.preview, canvas); !p) return fail(p.error().message);
+    }
+    if (!o.side_by_side.empty()) {
+        if (Status p = write_side_by_side(o.side_by_side, *img, canvas); !p) return fail(p.error().message);
+    }
+    char detail[256];
+    std::snprintf(detail, sizeof detail, "%llu strokes, %.2f dB PSNR, %llu bytes (%.2f bytes/stroke), %.2f s, stopped: %s",
+                  static_cast<unsigned long long>(st.strokes), st.psnr, static_cast<unsigned long long>(bytes),
+                  st.strokes ? double(bytes) / double(st.strokes) : 0.0, paint_secs, paint::stop_reason_name(st.stop));
+    progress.finish(true, st.strokes, st.psnr, detail);
+    if (o.progress != io::ProgressMode::Json) std::fprintf(stderr, "spt paint: %s: %s\n", o.output.c_str(), detail);
+    return 0;
+}
+
+}  // namespace
+
+int cmd_paint(int argc, char** argv) {
+    PaintCommandOptions o;
+    std::string err;
+    switch (parse_paint_options(argc, argv, o, err)) {
+        case ParseResult::Help: print_paint_help(stdout); return 0;
+        case ParseResult::Error:
+            std::fprintf(stderr, "spt paint: %s (see 'spt paint --help')\n", err.c_str());
+            return 2;
+        case ParseResult::Ok: break;
+    }
+    std::error_code ec;
+    if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
+        return paint_sequence(o);
+    return paint_still(o);
 }
 
 }  // namespace spt::cli

@@ -1,0 +1,202 @@
+"""Running the `spt` executable: finding it, checking its version, pack and paint.
+
+No bpy here: operators call these and turn SptToolError into a Blender error report."""
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+import threading
+
+MIN_VERSION = (0, 1, 0)
+
+
+class SptToolError(Exception):
+    pass
+
+
+def default_path() -> str:
+    """`spt` next to the add-on (a bundled build), else the one on PATH, else ''."""
+    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    for cand in (os.path.join(here, "bin", "spt"), os.path.join(here, "spt")):
+        if os.path.isfile(cand) and os.access(cand, os.X_OK):
+            return cand
+    return shutil.which("spt") or ""
+
+
+def resolve(path: str) -> str:
+    """The executable to run; raises SptToolError with a clear message when it is unusable."""
+    exe = path or default_path()
+    if not exe:
+        raise SptToolError("the 'spt' tool was not found: install it on PATH or set its path in "
+                           "Preferences > Add-ons > spt Grease Pencil")
+    if os.sep in exe or (os.altsep and os.altsep in exe):
+        if not os.path.isfile(exe):
+            raise SptToolError(f"the 'spt' tool was not found at {exe} (check the add-on preferences)")
+    else:
+        found = shutil.which(exe)
+        if not found:
+            raise SptToolError(f"the 'spt' tool '{exe}' is not on PATH (check the add-on preferences)")
+        exe = found
+    return exe
+
+
+def version(path: str):
+    """(major, minor, patch) reported by `spt --version`; raises SptToolError."""
+    exe = resolve(path)
+    try:
+        r = subprocess.run([exe, "--version"], capture_output=True, text=True, timeout=20)
+    except (OSError, subprocess.TimeoutExpired) as e:
+        raise SptToolError(f"cannot run {exe}: {e}") from None
+    m = re.search(r"(\d+)\.(\d+)\.(\d+)", r.stdout)
+    if r.returncode != 0 or not m:
+        raise SptToolError(f"{exe} --version failed: {(r.stderr or r.stdout).strip()[:300]}")
+    v = tuple(int(g) for g in m.groups())
+    if v < MIN_VERSION:
+        raise SptToolError(f"{exe} is version {'.'.join(map(str, v))}; this add-on needs "
+                           f"{'.'.join(map(str, MIN_VERSION))} or newer")
+    return v
+
+
+def _tail(text: str, n: int = 600) -> str:
+    text = (text or "").strip()
+    return text[-n:]
+
+
+def pack_stored(spt_path: str, src: str, dst: str) -> None:
+    """`spt pack SRC --stored -o DST`."""
+    exe = resolve(spt_path)
+    try:
+        r = subprocess.run([exe, "pack", src, "--stored", "-o", dst], capture_output=True, text=True)
+    except OSError as e:
+        raise SptToolError(f"cannot run {exe}: {e}") from None
+    if r.returncode != 0:
+        raise SptToolError(f"spt pack failed on {src}: {_tail(r.stderr or r.stdout)}")
+
+
+def pack_coded(spt_path: str, src: str, dst: str) -> None:
+    """`spt pack SRC -o DST` (stored -> range-coded)."""
+    exe = resolve(spt_path)
+    try:
+        r = subprocess.run([exe, "pack", src, "-o", dst], capture_output=True, text=True)
+    except OSError as e:
+        raise SptToolError(f"cannot run {exe}: {e}") from None
+    if r.returncode != 0:
+        raise SptToolError(f"spt pack failed on {src}: {_tail(r.stderr or r.stdout)}")
+
+
+def temp_path(suffix=".spt") -> str:
+    fd, p = tempfile.mkstemp(prefix="spt-blender-", suffix=suffix)
+    os.close(fd)
+    return p
+
+
+def paint_args(opts: dict) -> list:
+    """Command-line options of `spt paint` from the panel's settings (skipping defaults)."""
+    a = []
+    if opts.get("sets"):
+        a += ["--sets", str(opts["sets"])]
+    if opts.get("max_strokes"):
+        a += ["--max-strokes", str(opts["max_strokes"])]
+    if opts.get("target_psnr"):
+        a += ["--target-psnr", f"{opts['target_psnr']:g}"]
+    if opts.get("templates"):
+        a += ["--templates", opts["templates"]]
+    if opts.get("key_interval"):
+        a += ["--keyframe-interval", str(opts["key_interval"])]
+    if opts.get("roi"):
+        a += ["--roi-file", opts["roi"]]
+    a += ["--seed", str(opts.get("seed", 1))]
+    return a
+
+
+class PaintJob:
+    """`spt paint INPUT -o OUT ... --progress json` in the background.
+
+    A reader thread parses the JSON lines of stdout into `percent`, `done`, `total`; the caller
+    polls (a modal timer) or calls wait(). cancel() terminates the process and removes the output,
+    so a cancelled paint leaves no half-written file."""
+
+    def __init__(self, spt_path: str, source: str, output: str, opts: dict):
+        self.exe = resolve(spt_path)
+        self.output = output
+        self.cmd = [self.exe, "paint", source, "-o", output] + paint_args(opts) + ["--progress", "json"]
+        self.percent = 0.0
+        self.done = 0.0
+        self.total = 0.0
+        self.ended = False
+        self.end_event = None
+        self.cancelled = False
+        self._stderr = []
+        try:
+            self.proc = subprocess.Popen(self.cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                         stdin=subprocess.DEVNULL, text=True, bufsize=1)
+        except OSError as e:
+            raise SptToolError(f"cannot run {self.exe}: {e}") from None
+        self._out = threading.Thread(target=self._read_stdout, daemon=True)
+        self._err = threading.Thread(target=self._read_stderr, daemon=True)
+        self._out.start()
+        self._err.start()
+
+    def _read_stdout(self):
+        for line in self.proc.stdout:
+            line = line.strip()
+            if not line.startswith("{"):
+                continue
+            try:
+                ev = json.loads(line)
+            except ValueError:
+                continue
+            if ev.get("event") == "progress":
+                self.done = float(ev.get("done", 0) or 0)
+                self.total = float(ev.get("total", 0) or 0)
+                pct = ev.get("percent")
+                if pct is None and self.total > 0:
+                    pct = 100.0 * self.done / self.total
+                self.percent = max(0.0, min(100.0, float(pct or 0)))
+            elif ev.get("event") == "end":
+                self.end_event = ev
+                self.percent = 100.0 if ev.get("ok", True) else self.percent
+
+    def _read_stderr(self):
+        for line in self.proc.stderr:
+            self._stderr.append(line)
+            del self._stderr[:-50]  # keep the tail only
+
+    def poll(self):
+        """None while running, else the exit code."""
+        return self.proc.poll()
+
+    def cancel(self):
+        self.cancelled = True
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+        self._join()
+        try:
+            os.unlink(self.output)
+        except OSError:
+            pass
+
+    def _join(self):
+        self._out.join(timeout=5)
+        self._err.join(timeout=5)
+
+    def wait(self):
+        """Blocks until the process ends (the background/test path); raises SptToolError."""
+        self.proc.wait()
+        self._join()
+        self.check()
+
+    def check(self):
+        code = self.proc.returncode
+        if code != 0:
+            raise SptToolError(f"spt paint failed (exit {code}): {_tail(''.join(self._stderr))}")
+        if not os.path.isfile(self.output):
+            raise SptToolError(f"spt paint wrote no file at {self.output}")

@@ -1,0 +1,135 @@
+"""The .spt data model as plain Python values (format/SPEC.md sections 3-5).
+
+Strokes are tuples so that they are cheap, hashable and comparable (the exporter diffs frames
+by equality):
+
+    stamp:  (STAMP, set, template, orient, x, y, r, g, b, a)
+    affine: (AFFINE, template, tx, ty, a, b, c, d, r, g, b, a)
+    curve:  (CURVE, r, g, b, a, ((x, y, width), ...))
+
+All positions and lengths are Q4 integers (1/16 pixel), as in the file.
+"""
+
+from dataclasses import dataclass, field
+from typing import List, Optional, Tuple
+
+STAMP, AFFINE, CURVE = 0, 1, 2
+KEY, INTER = 0, 1
+
+TEMPLATE_BITMAP, TEMPLATE_ELLIPSE, TEMPLATE_RECTANGLE, TEMPLATE_TRIANGLE = 0, 1, 2, 3
+TEMPLATE_KIND_NAMES = {0: "bitmap", 1: "ellipse", 2: "rectangle", 3: "triangle"}
+
+UNKNOWN_FRAME_COUNT = 0xFFFFFFFF
+
+# Value ranges of section 4.
+MAX_POS = 1 << 24
+MAX_MATRIX = 1 << 16
+MAX_CURVE_WIDTH = 1 << 16
+
+
+class SptError(Exception):
+    """A file that cannot be read or written; the message names the file and byte offset."""
+
+
+class NeedsPack(SptError):
+    """The file holds range-coded frames: `spt pack --stored` must turn it into stored mode."""
+
+
+@dataclass
+class Limits:
+    """Checked before anything is allocated (mirrors format/include/spt/limits.hpp)."""
+    max_width: int = 16384
+    max_height: int = 16384
+    max_pixels: int = 1 << 28
+    max_chunk_bytes: int = 1 << 30
+    max_templates: int = 255
+    max_template_side: int = 1024
+    max_strokes_per_frame: int = 1 << 24
+    max_live_strokes: int = 1 << 24
+    max_curve_points: int = 1 << 16
+    max_metadata_bytes: int = 1 << 24
+    max_frames: int = 0xFFFFFFFE
+
+
+@dataclass
+class Template:
+    kind: int = TEMPLATE_BITMAP
+    width: int = 0
+    height: int = 0
+    pixels: bytes = b""  # bitmap only: width*height coverage bytes, top row first
+    name: str = ""
+
+
+@dataclass
+class Header:
+    width: int = 0
+    height: int = 0
+    fps_num: int = 24
+    fps_den: int = 1
+    frame_count: int = UNKNOWN_FRAME_COUNT
+    version_major: int = 1
+    version_minor: int = 0
+    background: Tuple[int, int, int] = (255, 255, 255)
+    sets: List[Tuple[int, int]] = field(default_factory=list)          # (width, height) px
+    orientations: List[Tuple[int, int]] = field(default_factory=list)  # (cos, sin) Q14
+
+
+@dataclass
+class Roi:
+    first_frame: int
+    last_frame: int
+    x: int
+    y: int
+    w: int
+    h: int
+
+
+@dataclass
+class StreamInfo:
+    header: Header = field(default_factory=Header)
+    templates: List[Template] = field(default_factory=list)
+    metadata: List[Tuple[str, str]] = field(default_factory=list)
+    rois: List[Roi] = field(default_factory=list)
+    # Unknown ancillary chunks (type, payload) kept in order so a rewrite can preserve them.
+    extra_chunks: List[Tuple[bytes, bytes]] = field(default_factory=list)
+
+
+@dataclass
+class Motion:
+    block_size: int
+    cols: int
+    rows: int
+    vectors: List[Tuple[int, int]]  # Q4 (dx, dy), row-major
+
+
+@dataclass
+class Frame:
+    index: int
+    type: int = KEY
+    removed: List[int] = field(default_factory=list)
+    motion: Optional[Motion] = None
+    added: list = field(default_factory=list)  # stroke tuples
+
+
+def default_orientations(n: int = 8) -> List[Tuple[int, int]]:
+    """The spec's default table: round(16384 cos(k pi/n)), round(16384 sin(k pi/n))."""
+    import math
+    return [(round(16384 * math.cos(k * math.pi / n)), round(16384 * math.sin(k * math.pi / n)))
+            for k in range(n)]
+
+
+def stroke_color(s) -> Tuple[int, int, int, int]:
+    if s[0] == STAMP:
+        return s[6], s[7], s[8], s[9]
+    if s[0] == AFFINE:
+        return s[8], s[9], s[10], s[11]
+    return s[1], s[2], s[3], s[4]
+
+
+def with_color(s, rgba):
+    r, g, b, a = rgba
+    if s[0] == STAMP:
+        return s[:6] + (r, g, b, a)
+    if s[0] == AFFINE:
+        return s[:8] + (r, g, b, a)
+    return (CURVE, r, g, b, a, s[5])

@@ -1,0 +1,159 @@
+"""Writer of .spt files in stored mode (coding 0), standard library only.
+
+The output goes to a temporary file beside the target and is renamed into place at the end, so
+a failure never leaves a half-written file."""
+
+import os
+import struct
+import tempfile
+from typing import Iterable, List
+
+from . import chunks
+from .model import AFFINE, CURVE, INTER, KEY, STAMP, Frame, SptError, StreamInfo
+
+_STAMP = struct.Struct("<BBBBiiBBBB")
+_AFFINE = struct.Struct("<BBiiiiiiBBBB")
+_CURVE_HEAD = struct.Struct("<BBBBBI")
+
+
+def head_payload(info: StreamInfo, frame_count: int) -> bytes:
+    h = info.header
+    p = struct.pack("<HHIIIIIIB3BBBH", 1, 0, 0, h.width, h.height, h.fps_num, h.fps_den, frame_count,
+                    0, *h.background, len(h.sets), len(h.orientations), 0)
+    p += b"".join(struct.pack("<HH", w, hh) for (w, hh) in h.sets)
+    p += b"".join(struct.pack("<hh", c, s) for (c, s) in h.orientations)
+    return p
+
+
+def tmpl_payload(t) -> bytes:
+    name = t.name.encode("utf-8")[:255]
+    if t.kind == 0:
+        if len(t.pixels) != t.width * t.height:
+            raise SptError(f"template '{t.name}': {len(t.pixels)} samples for {t.width}x{t.height}")
+        return struct.pack("<BBHHB", 0, 0, t.width, t.height, len(name)) + name + bytes(t.pixels)
+    return struct.pack("<BBHHB", t.kind, 0, 0, 0, len(name)) + name
+
+
+def meta_payload(items) -> bytes:
+    out = [struct.pack("<I", len(items))]
+    for k, v in items:
+        kb, vb = k.encode("utf-8"), v.encode("utf-8")
+        out.append(struct.pack("<I", len(kb)) + kb + struct.pack("<I", len(vb)) + vb)
+    return b"".join(out)
+
+
+def strokes_bytes(strokes: Iterable) -> bytes:
+    out = []
+    append = out.append
+    sp, ap = _STAMP.pack, _AFFINE.pack
+    for s in strokes:
+        k = s[0]
+        if k == STAMP:
+            append(sp(*s))
+        elif k == AFFINE:
+            append(ap(*s))
+        elif k == CURVE:
+            pts = s[5]
+            append(_CURVE_HEAD.pack(CURVE, s[1], s[2], s[3], s[4], len(pts)))
+            append(b"".join(struct.pack("<iiI", *p) for p in pts))
+        else:
+            raise SptError(f"unknown stroke kind {k}")
+    return b"".join(out)
+
+
+def frame_payload(fr: Frame) -> bytes:
+    head = struct.pack("<IBBH", fr.index, fr.type, 0, 0)
+    if fr.type == KEY:
+        return head + struct.pack("<I", len(fr.added)) + strokes_bytes(fr.added)
+    body = [head, struct.pack("<I", len(fr.removed)), struct.pack(f"<{len(fr.removed)}I", *fr.removed)]
+    if fr.motion is None:
+        body.append(b"\x00")
+    else:
+        m = fr.motion
+        body.append(struct.pack("<BHHH", 1, m.block_size, m.cols, m.rows))
+        body.append(struct.pack(f"<{2 * len(m.vectors)}h", *[c for v in m.vectors for c in v]))
+    body.append(struct.pack("<I", len(fr.added)))
+    body.append(strokes_bytes(fr.added))
+    return b"".join(body)
+
+
+def write_stored(path: str, info: StreamInfo, frames: List[Frame]) -> int:
+    """Writes a complete stored-mode file (HEAD, TMPL*, meta, rois, FRAM*, indx, IEND).
+    Returns the number of bytes written."""
+    parts = [chunks.SIGNATURE, chunks.chunk_bytes(b"HEAD", head_payload(info, len(frames)))]
+    for t in info.templates:
+        parts.append(chunks.chunk_bytes(b"TMPL", tmpl_payload(t)))
+    if info.metadata:
+        parts.append(chunks.chunk_bytes(b"meta", meta_payload(info.metadata)))
+    if info.rois:
+        parts.append(chunks.chunk_bytes(b"rois", struct.pack("<I", len(info.rois)) + b"".join(
+            struct.pack("<IIIIII", r.first_frame, r.last_frame, r.x, r.y, r.w, r.h) for r in info.rois)))
+    for ctype, payload in info.extra_chunks:
+        parts.append(chunks.chunk_bytes(ctype, payload))
+    offset = sum(len(p) for p in parts)
+    index = []
+    for fr in frames:
+        c = chunks.chunk_bytes(b"FRAM", frame_payload(fr))
+        index.append(struct.pack("<IBBHQ", fr.index, fr.type, 0, 0, offset))
+        parts.append(c)
+        offset += len(c)
+    index_offset = offset
+    indx = chunks.chunk_bytes(b"indx", struct.pack("<I", len(frames)) + b"".join(index))
+    parts.append(indx)
+    parts.append(chunks.chunk_bytes(b"IEND", struct.pack("<IQ", len(frames), index_offset)))
+    data = b"".join(parts)
+    atomic_write(path, data)
+    return len(data)
+
+
+def atomic_write(path: str, data: bytes) -> None:
+    folder = os.path.dirname(os.path.abspath(path))
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=".spt-", suffix=".part", dir=folder)
+    except OSError as e:
+        raise SptError(f"{path}: cannot write: {e.strerror or e}") from None
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        os.replace(tmp, path)
+    except OSError as e:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise SptError(f"{path}: cannot write: {e.strerror or e}") from None
+
+
+def frames_from_lists(live_lists: Iterable[list]) -> List[Frame]:
+    """Codes a sequence of live lists as key and inter frames (section 5, without motion).
+
+    An inter frame keeps the longest prefix of the new list that is a subsequence of the previous
+    one (greedy earliest matching is optimal for that), removes the rest and appends the tail. A
+    key frame is used when that would not be smaller."""
+    frames: List[Frame] = []
+    prev = None
+    for i, cur in enumerate(live_lists):
+        cur = list(cur)
+        if prev is None:
+            frames.append(Frame(index=i, type=KEY, added=cur))
+        else:
+            kept = []   # indices into prev of strokes kept, in order
+            j = 0
+            n = len(prev)
+            for s in cur:
+                while j < n and prev[j] != s:
+                    j += 1
+                if j == n:
+                    break
+                kept.append(j)
+                j += 1
+            keptset = set(kept)
+            removed = [k for k in range(n) if k not in keptset]
+            added = cur[len(kept):]
+            # Stored sizes: a removal costs 4 bytes, a record at least 16; key re-sends all.
+            if 4 * len(removed) + 16 * len(added) < 16 * len(cur):
+                frames.append(Frame(index=i, type=INTER, removed=removed, added=added))
+            else:
+                frames.append(Frame(index=i, type=KEY, added=cur))
+        prev = cur
+    return frames

@@ -1,0 +1,64 @@
+// `spt paint` options, parsed into one struct that both the still painter (cmd_paint.cpp) and
+// the video encoder take: the video path gets the same sets, templates, ROIs and acceptance.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "io/progress.hpp"
+#include "paint/painter.hpp"
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+
+namespace spt::cli {
+
+// A region of interest as given on the command line or in a --roi-file (frames inclusive;
+// a still uses frame 0).
+struct RoiSpec {
+    uint32_t first_frame = 0, last_frame = 0xFFFFFFFFu;
+    paint::Rect rect;
+};
+
+struct PaintCommandOptions {
+    std::string input;
+    std::string output;
+    paint::PaintOptions paint;            // seed, threads, limits, threshold, orient, lambda, ...
+    int sets = 6;                         // --sets, when --set-sizes is not given
+    std::vector<StrokeSet> set_sizes;     // --set-sizes WxH,WxH,... (coarse to fine)
+    std::string templates_dir;            // --templates: empty = the built-in set
+    std::vector<RoiSpec> rois;            // --roi and --roi-file together
+    std::string roi_file;
+    io::ProgressMode progress = io::ProgressMode::Auto;
+    std::string preview;                  // --preview OUT.png
+    std::string side_by_side;             // --side-by-side OUT.png
+    Rgb8 background{255, 255, 255};
+    bool stored = false;                  // --stored: coding 0 frames
+    size_t cli_roi_count = 0;             // rois[0..cli_roi_count) came from --roi (all frames)
+
+    // Sequences and video (ignored for a still image).
+    std::string frames;                   // --frames A-B
+    std::string fps;                      // --fps 24 | 30000/1001
+    bool skip_bad_frames = false;         // --skip-bad-frames
+    int keyframe_interval = 100;          // --keyframe-interval N
+    double cut_threshold = 6.0;           // --cut-threshold X
+    std::string flow = "dis-ultrafast";   // --flow
+    uint64_t max_inter_strokes = 4000;    // --max-inter-strokes N
+    int block_size = 16;                  // --motion-block N
+
+    // The options that shape the painting, canonically spelt (for the painter.options metadata):
+    // no paths and no thread count, so that the file bytes do not depend on them.
+    std::string canonical() const;
+};
+
+enum class ParseResult { Ok, Help, Error };
+
+// Parses argv (argv[0] is the command name). On Error, `err` says what is wrong.
+ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& out, std::string& err);
+void print_paint_help(std::FILE* f);
+
+// Reads a --roi-file: {"rois":[{"x":..,"y":..,"w":..,"h":..,"frames":[first,last] or "A-B"}]}; "frames"
+// is optional (all frames). Errors name the file and the element.
+Result<std::vector<RoiSpec>> load_roi_file(const std::string& path);
+
+}  // namespace spt::cli

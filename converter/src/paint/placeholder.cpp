@@ -1,1 +1,0 @@
-// placeholder so the target has a source; remove once the folder has real sources

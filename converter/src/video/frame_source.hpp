@@ -1,0 +1,42 @@
+// Where video frames come from: an image sequence (through spt::io) or a video file (through
+// OpenCV). Sources stream: one frame in memory at a time.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "io/image_io.hpp"
+#include "io/sequence.hpp"
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+
+namespace spt::video {
+
+struct SourceFrame {
+    long number = 0;        // the input's frame number (sequence number, or video position)
+    io::Image image;        // 8-bit sRGB RGB
+    bool repeated = false;  // a bad frame replaced by the previous one (--skip-bad-frames)
+    std::string problem;    // why it was repeated
+};
+
+class FrameSource {
+public:
+    virtual ~FrameSource() = default;
+    // The next frame; false at the end. Frames all have the first frame's size: a frame of
+    // another size is an error naming it (or a bad frame when skipping).
+    virtual Result<bool> next(SourceFrame& out) = 0;
+    // Frame rate stored in the container, when there is one.
+    virtual bool has_fps() const { return false; }
+    virtual Rational fps() const { return {}; }
+    // Frames expected, or 0 when unknown (for progress).
+    virtual uint64_t expected_frames() const = 0;
+    virtual std::string describe() const = 0;
+};
+
+// Opens a sequence pattern or folder (spt::io::list_sequence) or a video file
+// (spt::io::is_video_file, cv::VideoCapture). `frames` is "A-B" or empty.
+Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const std::string& frames,
+                                                 bool skip_bad_frames);
+
+}  // namespace spt::video

@@ -1,0 +1,291 @@
+#include "video/video_encoder.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+#include "spt/reader.hpp"
+#include "video/stroke_cull.hpp"
+
+namespace spt::video {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+cv::Mat wrap_rgb(uint32_t w, uint32_t h, const uint8_t* rgb) {
+    return cv::Mat(int(h), int(w), CV_8UC3, const_cast<uint8_t*>(rgb));
+}
+
+}  // namespace
+
+uint64_t frame_seed(uint64_t seed, uint32_t index) {
+    // splitmix64 of the pair: well mixed, and the same on every platform.
+    uint64_t z = seed + 0x9E3779B97F4A7C15ull * (uint64_t(index) + 1);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptions& opts, uint32_t width,
+                                                           uint32_t height, Rational fps,
+                                                           std::vector<RoiSpec> rois,
+                                                           std::vector<std::pair<std::string, std::string>> metadata,
+                                                           PaintFn painter) {
+    if (width == 0 || height == 0) return make_error(Code::InvalidArgument, "video frames have no pixels");
+    if (opts.block_size < 8 || opts.block_size > 256)
+        return make_error(Code::InvalidArgument, "motion block size must be 8..256, got " + std::to_string(opts.block_size));
+    if (opts.keyframe_interval < 1)
+        return make_error(Code::InvalidArgument, "key frame interval must be at least 1");
+    std::unique_ptr<VideoEncoder> e(new VideoEncoder());
+    e->opts_ = opts;
+    if (painter) {
+        e->painter_ = std::move(painter);
+    } else {
+        e->painter_ = [](const paint::ImageView& m, Canvas& c, const Renderer& r, const paint::PaintSetup& s,
+                         const paint::PaintOptions& o, std::vector<Stroke>& out, const std::vector<uint8_t>* region) {
+            return paint::paint(m, c, r, s, o, out, region);
+        };
+    }
+    CutOptions co;
+    co.factor = opts.cut_threshold;
+    co.window = opts.cut_window;
+    e->cuts_ = CutDetector(co);
+    e->flow_ = std::make_unique<FlowEstimator>(opts.flow);
+
+    Header& h = e->setup_.header;
+    h.width = width;
+    h.height = height;
+    h.fps = fps;
+    h.background = opts.background;
+    h.sets = paint::default_sets(width, height, opts.sets);
+    h.orientations = default_orientations(8);
+    e->setup_.templates = opts.templates.empty() ? paint::default_templates() : opts.templates;
+
+    Result<std::unique_ptr<Renderer>> r = Renderer::create(h, e->setup_.templates);
+    if (!r) return r.error();
+    e->renderer_ = std::move(*r);
+
+    StreamInfo info;
+    info.header = h;
+    info.templates = e->setup_.templates;
+    info.metadata = std::move(metadata);
+    WriterOptions wo;
+    wo.coding = opts.stored_coding ? Coding::Stored : Coding::Range;
+    Result<std::unique_ptr<Writer>> w = Writer::create(opts.output, info, wo);
+    if (!w) return w.error();
+    e->writer_ = std::move(*w);
+
+    e->rois_ = std::move(rois);
+    e->roi_used_.assign(e->rois_.size(), {-1, -1});
+    e->canvas_ = Canvas(width, height, opts.background);
+    return e;
+}
+
+VideoEncoder::~VideoEncoder() {
+    if (writer_ && !finished_) writer_->abort();
+}
+
+uint64_t VideoEncoder::bytes_written() const { return writer_ ? writer_->stats().total_bytes : 0; }
+
+paint::PaintOptions VideoEncoder::frame_paint_options(long source_number, uint32_t index) const {
+    paint::PaintOptions po = opts_.paint;
+    po.seed = frame_seed(opts_.paint.seed, index);
+    po.rois.clear();
+    for (const RoiSpec& r : rois_) {
+        if (source_number < r.first || source_number > r.last) continue;
+        po.rois.push_back({r.x, r.y, r.w, r.h});
+    }
+    for (const auto& r : opts_.paint.rois) po.rois.push_back(r);
+    return po;
+}
+
+// Mean absolute difference per channel between the canvas and the model, smoothed so that
+// isolated pixels (a stroke's edge one pixel off) do not call for repainting.
+void VideoEncoder::error_map(const paint::ImageView& model, cv::Mat& err) const {
+    cv::Mat diff;
+    cv::absdiff(wrap_rgb(canvas_.width, canvas_.height, canvas_.rgb.data()),
+                wrap_rgb(model.width, model.height, model.rgb), diff);
+    cv::Mat f;
+    diff.convertTo(f, CV_32FC3, 1.0 / 3.0);
+    cv::transform(f, err, cv::Matx13f(1.f, 1.f, 1.f));
+    cv::blur(err, err, cv::Size(7, 7));
+}
+
+Status VideoEncoder::encode_key(const paint::ImageView& model, Frame& frame, FrameResult& r) {
+    frame.type = FrameType::Key;
+    frame.removed.clear();
+    frame.motion = MotionField{};
+    frame.added.clear();
+    canvas_.fill(opts_.background);
+    paint::PaintOptions po = frame_paint_options(r.source_number, r.index);
+    const auto t0 = Clock::now();
+    painter_(model, canvas_, *renderer_, setup_, po, frame.added, nullptr);
+    r.seconds_paint = seconds_since(t0);
+    error_map(model, ref_err_);
+    r.type = FrameType::Key;
+    r.removed = uint32_t(live_.size());
+    return {};
+}
+
+Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& gray, Frame& frame,
+                                  FrameResult& r, bool& want_key) {
+    frame.type = FrameType::Inter;
+    frame.removed = pending_removals_;
+    auto t0 = Clock::now();
+    flow_->compute(prev_gray_, gray, flow_field_);
+    frame.motion = block_motion(flow_field_, opts_.block_size);
+    if (is_still(frame.motion)) frame.motion = MotionField{};
+    frame.added.clear();
+    r.seconds_flow = seconds_since(t0);
+    t0 = Clock::now();
+
+    // The moved list, exactly as the decoder will have it before the new strokes.
+    std::vector<Stroke> moved = live_;
+    Status st = apply_frame(moved, frame, setup_.header);
+    if (!st) return st;
+    st = renderer_->render(canvas_, moved);
+    if (!st) return st;
+    r.seconds_render = seconds_since(t0);
+
+    // Repaint where the painting's error grew past the threshold: content that moved in ways
+    // the block field does not carry, disocclusions, new content. Where the error merely stayed
+    // what it was when the painter last worked there (texture it never matched) the old strokes
+    // stay, so they do not flicker. That reference error travels with the motion; comparing
+    // with the previous frame's error instead would let slow drift go unnoticed forever.
+    cv::Mat err, baseline, region;
+    error_map(model, err);
+    cv::Mat map(flow_field_.size(), CV_32FC2);
+    for (int y = 0; y < map.rows; ++y) {
+        const cv::Vec2f* f = flow_field_.ptr<cv::Vec2f>(y);
+        cv::Vec2f* m = map.ptr<cv::Vec2f>(y);
+        for (int x = 0; x < map.cols; ++x) m[x] = cv::Vec2f(float(x) - f[x][0], float(y) - f[x][1]);
+    }
+    cv::remap(ref_err_, ref_err_, map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+    cv::dilate(ref_err_, baseline, cv::Mat::ones(5, 5, CV_8U));
+    const double t = opts_.repaint_error;
+    cv::Mat grown = (err > t) & (err > baseline + t * 0.5);
+    cv::dilate(grown, region, cv::Mat::ones(5, 5, CV_8U));
+    r.repaint_fraction = double(cv::countNonZero(region)) / double(region.total());
+    if (r.repaint_fraction > opts_.repaint_key_fraction) {
+        want_key = true;
+        return {};
+    }
+    if (r.repaint_fraction > 0) {
+        t0 = Clock::now();
+        std::vector<uint8_t> mask(region.data, region.data + region.total());
+        paint::PaintOptions po = frame_paint_options(r.source_number, r.index);
+        po.max_strokes = std::min<uint64_t>(po.max_strokes, opts_.max_inter_strokes);
+        painter_(model, canvas_, *renderer_, setup_, po, frame.added, &mask);
+        r.seconds_paint = seconds_since(t0);
+        // The painter's new result becomes the reference where it worked.
+        cv::Mat after;
+        error_map(model, after);
+        after.copyTo(ref_err_, region);
+    }
+    live_ = std::move(moved);
+    r.type = FrameType::Inter;
+    r.removed = uint32_t(frame.removed.size());
+    return {};
+}
+
+Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, long source_number) {
+    if (finished_) return make_error(Code::BadState, "video encoder already finished");
+    const auto t0 = Clock::now();
+    const uint32_t w = setup_.header.width, h = setup_.header.height;
+    paint::ImageView model{w, h, rgb};
+    FrameResult r;
+    r.index = next_index_;
+    r.source_number = source_number;
+
+    cv::Mat gray;
+    cv::cvtColor(wrap_rgb(w, h, rgb), gray, cv::COLOR_RGB2GRAY);
+    r.cut_score = cuts_.push(gray);
+    r.cut = r.cut_score.cut;
+
+    Frame frame;
+    frame.index = next_index_;
+    bool key = next_index_ == 0 || r.cut || since_key_ + 1 >= uint32_t(opts_.keyframe_interval);
+    if (!key) {
+        bool want_key = false;
+        Status st = encode_inter(model, gray, frame, r, want_key);
+        if (!st) return st.error();
+        key = want_key;
+    }
+    if (key) {
+        Status st = encode_key(model, frame, r);
+        if (!st) return st.error();
+        live_.clear();
+    }
+    Status st = writer_->append(frame);
+    if (!st) return st.error();
+    r.added = uint32_t(frame.added.size());
+    live_.insert(live_.end(), frame.added.begin(), frame.added.end());
+
+    // Book-keeping for the next frame.
+    since_key_ = key ? 0 : since_key_ + 1;
+    prev_gray_ = gray;
+    pending_removals_.clear();
+    if (opts_.cull_every > 0 && (next_index_ % uint32_t(opts_.cull_every)) == 0) {
+        const auto tc = Clock::now();
+        Result<std::vector<uint32_t>> hidden = hidden_strokes(live_, *renderer_, w, h, scratch_);
+        if (!hidden) return hidden.error();
+        pending_removals_ = std::move(*hidden);
+        r.seconds_cull = seconds_since(tc);
+    }
+    for (size_t i = 0; i < rois_.size(); ++i) {
+        if (source_number < rois_[i].first || source_number > rois_[i].last) continue;
+        if (roi_used_[i].first < 0) roi_used_[i].first = next_index_;
+        roi_used_[i].second = next_index_;
+    }
+
+    r.live = uint32_t(live_.size());
+    r.psnr = paint::psnr(model, canvas_.rgb.data());
+    r.seconds = seconds_since(t0);
+    ++next_index_;
+    report_.frames++;
+    if (key) {
+        report_.key_frames++;
+        report_.key_frame_indices.push_back(r.index);
+        report_.seconds_key += r.seconds;
+    } else {
+        report_.seconds_inter += r.seconds;
+    }
+    if (r.cut) report_.cuts++;
+    report_.strokes_added += r.added;
+    report_.strokes_removed += r.removed;
+    report_.max_live = std::max<uint64_t>(report_.max_live, live_.size());
+    psnr_sum_ += r.psnr;
+    report_.mean_psnr = psnr_sum_ / double(report_.frames);
+    report_.bytes = writer_->stats().total_bytes;
+    return r;
+}
+
+Status VideoEncoder::finish() {
+    if (finished_) return make_error(Code::BadState, "video encoder already finished");
+    for (size_t i = 0; i < rois_.size(); ++i) {
+        if (roi_used_[i].first < 0) continue;
+        const RoiSpec& s = rois_[i];
+        Roi roi{uint32_t(roi_used_[i].first), uint32_t(roi_used_[i].second), uint32_t(s.x), uint32_t(s.y),
+                uint32_t(s.w), uint32_t(s.h)};
+        Status st = writer_->add_roi(roi);
+        if (!st) return st;
+    }
+    Status st = writer_->finish();
+    finished_ = true;
+    report_.bytes = writer_->stats().total_bytes;
+    return st;
+}
+
+void VideoEncoder::abort() {
+    if (writer_ && !finished_) writer_->abort();
+    finished_ = true;
+}
+
+}  // namespace spt::video

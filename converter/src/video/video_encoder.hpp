@@ -1,0 +1,104 @@
+// The frame-by-frame video painter: decides key and inter frames, carries the live strokes
+// with the motion field, repaints where the painting fell behind the source, and writes every
+// frame through spt::Writer. The encoder keeps its live list by applying each frame exactly as
+// a decoder does (spt::apply_frame), so its canvas is the decoder's canvas.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "paint/painter.hpp"
+#include "spt/render.hpp"
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+#include "spt/writer.hpp"
+#include "video/cut_detect.hpp"
+#include "video/motion.hpp"
+#include "video/roi_file.hpp"
+#include "video/video_paint.hpp"
+
+namespace spt::video {
+
+// The still painter, replaceable for tests (same contract as spt::paint::paint).
+using PaintFn = std::function<paint::PaintStats(const paint::ImageView&, Canvas&, const Renderer&,
+                                                const paint::PaintSetup&, const paint::PaintOptions&,
+                                                std::vector<Stroke>&, const std::vector<uint8_t>*)>;
+
+// What happened to one frame.
+struct FrameResult {
+    uint32_t index = 0;
+    long source_number = 0;
+    FrameType type = FrameType::Key;
+    bool cut = false;             // the cut detector fired
+    CutScore cut_score;
+    double repaint_fraction = 0;  // share of the canvas marked for repainting (inter frames)
+    uint32_t added = 0, removed = 0, live = 0;
+    double psnr = 0;
+    double seconds = 0;
+    double seconds_flow = 0, seconds_render = 0, seconds_paint = 0, seconds_cull = 0;
+};
+
+class VideoEncoder {
+public:
+    // Writes the stream header. `rois` use input frame numbers.
+    static Result<std::unique_ptr<VideoEncoder>> create(const VideoPaintOptions& opts, uint32_t width,
+                                                        uint32_t height, Rational fps,
+                                                        std::vector<RoiSpec> rois = {},
+                                                        std::vector<std::pair<std::string, std::string>> metadata = {},
+                                                        PaintFn painter = {});
+    ~VideoEncoder();
+
+    // Paints and writes the next frame (RGB8, width * height * 3).
+    Result<FrameResult> add_frame(const uint8_t* rgb, long source_number);
+    // Writes the ROI records, the index and the end; renames the output into place.
+    Status finish();
+    // Removes the partial output.
+    void abort();
+
+    const Canvas& canvas() const { return canvas_; }
+    const std::vector<Stroke>& live() const { return live_; }
+    const paint::PaintSetup& setup() const { return setup_; }
+    const Renderer& renderer() const { return *renderer_; }
+    const VideoPaintReport& report() const { return report_; }
+    uint64_t bytes_written() const;
+
+private:
+    VideoEncoder() = default;
+    Status encode_key(const paint::ImageView& model, Frame& frame, FrameResult& r);
+    Status encode_inter(const paint::ImageView& model, const cv::Mat& gray, Frame& frame, FrameResult& r,
+                        bool& want_key);
+    void error_map(const paint::ImageView& model, cv::Mat& err) const;
+    paint::PaintOptions frame_paint_options(long source_number, uint32_t index) const;
+
+    VideoPaintOptions opts_;
+    paint::PaintSetup setup_;
+    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<Writer> writer_;
+    PaintFn painter_;
+    std::unique_ptr<FlowEstimator> flow_;
+    CutDetector cuts_;
+
+    std::vector<RoiSpec> rois_;
+    std::vector<std::pair<long, long>> roi_used_;  // output frame range each ROI covered
+    std::vector<Stroke> live_;
+    Canvas canvas_;
+    cv::Mat prev_gray_, flow_field_;
+    cv::Mat ref_err_;  // error the painter left where it last painted, carried by the motion
+    std::vector<uint32_t> pending_removals_;  // hidden strokes, removed by the next frame
+    std::vector<uint8_t> scratch_;
+    uint32_t next_index_ = 0, since_key_ = 0;
+    VideoPaintReport report_;
+    double psnr_sum_ = 0;
+    bool finished_ = false;
+};
+
+// The per-frame seed: a mix of the user's seed and the frame index, so that a frame's strokes
+// do not depend on how many random numbers earlier frames used.
+uint64_t frame_seed(uint64_t seed, uint32_t index);
+
+}  // namespace spt::video

@@ -1,0 +1,160 @@
+#include "video/video_paint.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "video/frame_source.hpp"
+#include "video/roi_file.hpp"
+#include "video/video_encoder.hpp"
+
+namespace spt::video {
+
+namespace {
+
+std::atomic<bool> g_signal_stop{false};
+// The first signal asks for a clean stop after the current frame; a second one ends the
+// process the default way (the output then only exists as "<out>.partial", never under its
+// final name).
+extern "C" void on_stop_signal(int sig) {
+    if (g_signal_stop.exchange(true)) {
+        std::signal(sig, SIG_DFL);
+        std::raise(sig);
+    }
+}
+
+// Installs SIGINT/SIGTERM handlers for the encode's lifetime and restores the old ones.
+class SignalGuard {
+public:
+    explicit SignalGuard(bool install) : installed_(install) {
+        if (!installed_) return;
+        g_signal_stop.store(false);
+        old_int_ = std::signal(SIGINT, on_stop_signal);
+        old_term_ = std::signal(SIGTERM, on_stop_signal);
+    }
+    ~SignalGuard() {
+        if (!installed_) return;
+        std::signal(SIGINT, old_int_);
+        std::signal(SIGTERM, old_term_);
+    }
+private:
+    bool installed_;
+    void (*old_int_)(int) = SIG_DFL;
+    void (*old_term_)(int) = SIG_DFL;
+};
+
+std::string options_text(const VideoPaintOptions& o) {
+    std::ostringstream s;
+    s << "sets=" << o.sets << " keyframe-interval=" << o.keyframe_interval << " cut-threshold=" << o.cut_threshold
+      << " flow=" << flow_method_name(o.flow) << " block=" << o.block_size << " repaint-error=" << o.repaint_error
+      << " max-strokes=" << o.paint.max_strokes << " max-inter-strokes=" << o.max_inter_strokes
+      << " target-psnr=" << o.paint.target_psnr << " threshold=" << o.paint.threshold;
+    return s.str();
+}
+
+}  // namespace
+
+Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {
+    SignalGuard guard(opts.install_signal_handlers);
+    auto stop_requested = [&] {
+        return g_signal_stop.load() || (opts.stop && opts.stop->load());
+    };
+
+    if (opts.output.empty()) return make_error(Code::InvalidArgument, "no output file given");
+    std::vector<RoiSpec> rois;
+    if (!opts.roi_file.empty()) {
+        Result<std::vector<RoiSpec>> r = read_roi_file(opts.roi_file);
+        if (!r) return r.error();
+        rois = std::move(*r);
+    }
+    Result<std::unique_ptr<FrameSource>> src = open_source(opts.input, opts.frames, opts.skip_bad_frames);
+    if (!src) return src.error();
+    FrameSource& source = **src;
+
+    Rational fps{24, 1};
+    if (!opts.fps.empty()) {
+        Result<Rational> f = parse_fps(opts.fps);
+        if (!f) return f.error();
+        fps = *f;
+    } else if (source.has_fps()) {
+        fps = source.fps();
+    }
+
+    SourceFrame frame;
+    Result<bool> got = source.next(frame);
+    if (!got) return got.error();
+    if (!*got) return make_error(Code::IoError, source.describe() + ": no frames to paint");
+
+    std::vector<std::pair<std::string, std::string>> meta = {
+        {"software", "spt video painter"},
+        {"source", opts.input},
+        {"painter.seed", std::to_string(opts.paint.seed)},
+        {"painter.options", options_text(opts)},
+    };
+    Result<std::unique_ptr<VideoEncoder>> enc =
+        VideoEncoder::create(opts, frame.image.width, frame.image.height, fps, rois, meta);
+    if (!enc) return enc.error();
+    VideoEncoder& encoder = **enc;
+
+    progress.set_total(double(source.expected_frames()));
+    uint64_t skipped = 0;
+    bool interrupted = false;
+    for (;;) {
+        if (frame.repeated) {
+            ++skipped;
+            std::fprintf(stderr, "spt paint: warning: %s; repeating the previous frame\n", frame.problem.c_str());
+        }
+        Result<FrameResult> r = encoder.add_frame(frame.image.rgb.data(), frame.number);
+        if (!r) {
+            encoder.abort();
+            Error e = r.error();
+            e.message = source.describe() + " frame " + std::to_string(frame.number) + ": " + e.message;
+            return e;
+        }
+        const VideoPaintReport& rep = encoder.report();
+        std::ostringstream detail;
+        detail << (r->type == FrameType::Key ? "key" : "inter") << " frame " << r->index << ", " << r->added
+               << " strokes added, " << r->live << " live, " << std::fixed;
+        detail.precision(1);
+        detail << r->psnr << " dB";
+        progress.update(double(rep.frames), detail.str());
+        if (opts.on_frame) opts.on_frame(rep.frames);
+        if (stop_requested()) {
+            interrupted = true;
+            break;
+        }
+        got = source.next(frame);
+        if (!got) {
+            encoder.abort();
+            return got.error();
+        }
+        if (!*got) break;
+    }
+    Status st = encoder.finish();
+    if (report) {
+        *report = encoder.report();
+        report->skipped_frames = skipped;
+        report->interrupted = interrupted;
+    }
+    if (!st) return st;
+    if (interrupted)
+        return make_error(Code::BadState, "interrupted: " + opts.output + " holds the " +
+                                              std::to_string(encoder.report().frames) + " finished frames");
+    return {};
+}
+
+int run_video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {
+    Status st = video_paint(opts, progress, report);
+    if (!st) {
+        progress.finish(false, st.error().message);
+        std::fprintf(stderr, "spt paint: %s\n", st.error().message.c_str());
+        return st.error().code == Code::InvalidArgument ? 2 : 1;
+    }
+    progress.finish(true, opts.output);
+    return 0;
+}
+
+}  // namespace spt::video

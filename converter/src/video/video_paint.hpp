@@ -1,0 +1,94 @@
+// `spt paint` for image sequences and video files: one entry point the CLI calls.
+//
+// Key frames (the first frame, the first frame after a cut, every `keyframe_interval` frames)
+// are painted fully by the still painter. Between key frames the live strokes travel with a
+// block motion field measured by optical flow, strokes that later strokes cover completely are
+// removed, and only the areas whose error grew (motion, disocclusion, changed content) are
+// repainted. Every frame goes through spt::Writer, so the file has an index and seeks.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/progress.hpp"
+#include "paint/painter.hpp"
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+
+namespace spt::video {
+
+enum class FlowMethod { DisUltrafast, DisFast, DisMedium, Farneback };
+bool parse_flow_method(const std::string& s, FlowMethod& out);
+const char* flow_method_name(FlowMethod m);
+
+struct VideoPaintOptions {
+    // Input: a sequence pattern ("shot.####.exr", "shot.%04d.png", "shot.1-120#.png"), a folder
+    // of frames, or a video file (anything OpenCV's VideoCapture opens).
+    std::string input;
+    std::string output;               // the .spt file
+    std::string frames;               // "A-B": sequence frame numbers, or 0-based video frames
+    std::string fps;                  // "24", "30000/1001", "29.97"; empty = container or 24
+    bool skip_bad_frames = false;     // repeat the previous frame instead of failing
+    int keyframe_interval = 100;      // at most this many frames from one key frame to the next
+    std::string roi_file;             // JSON {"rois":[{"frames":"10-40","x":..,"y":..,"w":..,"h":..}]}
+
+    // Cut detection: a cut when (pixel difference x edge difference) exceeds `cut_threshold`
+    // times the mean of that product over the look-back window (the paper's detector).
+    double cut_threshold = 6.0;
+    int cut_window = 12;
+    // A key frame instead of an inter frame when more than this fraction of the canvas would
+    // be repainted (dissolves, fades, fast motion): cheaper and cleaner than repainting on top.
+    double repaint_key_fraction = 0.6;
+
+    FlowMethod flow = FlowMethod::DisUltrafast;
+    int block_size = 16;              // motion block in pixels (SPEC.md 5: 8..256)
+    double repaint_error = 18.0;      // mean |painting - source| per channel that calls for repaint
+    uint64_t max_inter_strokes = 4000;  // cap on strokes added per inter frame
+    int cull_every = 1;               // remove covered strokes every N frames (0 = never)
+
+    // The still painter's options (seed, threads, max strokes per key frame, target PSNR,
+    // threshold, orient) and its setup.
+    paint::PaintOptions paint;
+    int sets = 6;                     // stroke sets, coarse to fine
+    std::vector<Template> templates;  // empty = paint::default_templates()
+    Rgb8 background{255, 255, 255};
+    bool stored_coding = false;       // coding 0 instead of range coding
+
+    // Set from anywhere (signal handler, test) to stop after the current frame; the output then
+    // holds every finished frame. run_video_paint installs SIGINT/SIGTERM handlers that set it.
+    std::atomic<bool>* stop = nullptr;
+    bool install_signal_handlers = true;
+    // Called after every finished frame with the number of frames written so far (benches,
+    // tests, a GUI's preview).
+    std::function<void(uint64_t frames_done)> on_frame;
+};
+
+// What an encode did, for reports and benches.
+struct VideoPaintReport {
+    uint64_t frames = 0, key_frames = 0, cuts = 0, skipped_frames = 0;
+    uint64_t strokes_added = 0, strokes_removed = 0, max_live = 0;
+    uint64_t bytes = 0;
+    double seconds_key = 0, seconds_inter = 0;  // wall time spent in each kind of frame
+    double mean_psnr = 0;
+    bool interrupted = false;
+    std::vector<uint32_t> key_frame_indices;    // output frame indices
+};
+
+// Encodes `opts.input` into `opts.output`. Returns the process exit code (0 ok, 1 failure,
+// 2 bad options) and prints errors to stderr naming the file or frame. `report` may be null.
+int run_video_paint(const VideoPaintOptions& opts, io::Progress& progress,
+                    VideoPaintReport* report = nullptr);
+
+// The same as a Status (for tests and callers that want the error text).
+Status video_paint(const VideoPaintOptions& opts, io::Progress& progress,
+                   VideoPaintReport* report = nullptr);
+
+// "24" -> 24/1, "30000/1001", "29.97" -> 30000/1001, "23.976" -> 24000/1001, "25.0" -> 25/1.
+Result<Rational> parse_fps(const std::string& text);
+// A container's floating-point rate as the rational it stands for (NTSC rates recognised).
+Rational fps_from_double(double fps);
+
+}  // namespace spt::video

@@ -1,0 +1,55 @@
+"""Shared set-up of the Blender tests: command-line arguments and installing the add-on from the
+built zip the way a user does. Run as: blender -b --factory-startup --python-exit-code 1
+--python <test>.py -- ZIP SPT_TOOL WORKDIR [MEDIA_DIR]"""
+
+import os
+import sys
+
+import bpy
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+SKIP = 77  # CTest SKIP_RETURN_CODE
+
+
+def args():
+    a = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    while len(a) < 4:
+        a.append("")
+    zip_path, spt, work, media = a[:4]
+    os.makedirs(work, exist_ok=True)
+    return zip_path, spt, work, media
+
+
+def install(zip_path, spt=""):
+    import addon_utils
+    bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
+    mod = addon_utils.enable("spt_grease_pencil", default_set=True, handle_error=None)
+    assert mod is not None, "the add-on did not enable"
+    prefs = bpy.context.preferences.addons["spt_grease_pencil"].preferences
+    prefs.spt_path = spt
+    return prefs
+
+
+def spt_works(spt, command):
+    """True when `spt COMMAND --help` exits 0 (the command is implemented)."""
+    import subprocess
+    if not spt or not os.path.isfile(spt):
+        return False
+    r = subprocess.run([spt, command, "--help"], capture_output=True, text=True)
+    return r.returncode == 0 and "not implemented" not in (r.stdout + r.stderr)
+
+
+def reset_scene():
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+
+
+def fail(msg):
+    print("FAIL:", msg)
+    sys.exit(1)
+
+
+def check(cond, msg):
+    if not cond:
+        fail(msg)

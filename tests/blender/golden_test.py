@@ -1,0 +1,33 @@
+"""Cross-check of the spec: the add-on's bpy-free reader decodes every golden stored file of
+tests/format/golden/ (written by libspt). Exit 77 (skipped) when there are none yet."""
+
+import glob
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "blender_addon"))
+from spt_grease_pencil.io import SptError, read_file  # noqa: E402
+
+golden = sorted(glob.glob(os.path.join(HERE, "..", "format", "golden", "*.stored.spt")))
+if not golden:
+    print("SKIP: no tests/format/golden/*.stored.spt yet")
+    sys.exit(77)
+bad = 0
+for p in golden:
+    name = os.path.basename(p)
+    expect_error = name.startswith(("bad", "corrupt", "invalid"))
+    try:
+        f = read_file(p)
+        counts = [len(lst) for lst in f.live_lists()]
+        ok = f.complete or "truncated" in name or "incomplete" in name
+        print(f"{name}: {f.info.header.width}x{f.info.header.height}, {len(f.frames)} frames, "
+              f"{sum(counts)} live strokes in all, complete={f.complete}")
+        if expect_error or not ok:
+            print(f"  FAIL: {name} should {'fail' if expect_error else 'be complete'}")
+            bad += 1
+    except SptError as e:
+        print(f"{name}: error: {e}")
+        if not expect_error:
+            bad += 1
+sys.exit(1 if bad else 0)

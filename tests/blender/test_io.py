@@ -1,0 +1,266 @@
+"""Unit tests of the add-on's bpy-free file layer (python3 -m unittest, no Blender needed)."""
+
+import os
+import random
+import struct
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import spt_samples  # noqa: E402  (puts blender_addon on sys.path)
+
+from spt_grease_pencil.io import colors, geometry, stream_json  # noqa: E402
+from spt_grease_pencil.io.model import AFFINE, CURVE, INTER, KEY, STAMP, Frame, SptError, NeedsPack  # noqa: E402
+from spt_grease_pencil.io.reader import apply_frames, read_bytes, read_file  # noqa: E402
+from spt_grease_pencil.io.writer import frames_from_lists, write_stored  # noqa: E402
+from spt_grease_pencil.io.model import Limits  # noqa: E402
+
+try:
+    import numpy as np
+    from spt_grease_pencil.io import geometry_np
+except ImportError:  # numpy is optional for the file layer
+    np = None
+
+
+def read_all(p):
+    with open(p, "rb") as f:
+        return f.read()
+
+
+def f32(x):
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+class Tmp(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def path(self, name):
+        return os.path.join(self.dir.name, name)
+
+
+class RoundTrip(Tmp):
+    def test_write_read_identical(self):
+        inf, frames = spt_samples.animation(frames=5)
+        p = self.path("a.spt")
+        write_stored(p, inf, frames)
+        f = read_file(p)
+        self.assertTrue(f.complete)
+        inf.header.frame_count = 5
+        self.assertEqual(f.info.header, inf.header)
+        self.assertEqual(f.info.templates, inf.templates)
+        self.assertEqual(f.info.metadata, inf.metadata)
+        self.assertEqual(len(f.frames), 5)
+        for a, b in zip(f.frames, frames):
+            self.assertEqual((a.index, a.type, a.removed, a.added), (b.index, b.type, b.removed, b.added))
+            self.assertEqual(a.motion, b.motion)
+        # Rewriting what was read gives the same bytes.
+        p2 = self.path("b.spt")
+        write_stored(p2, f.info, f.frames)
+        self.assertEqual(read_all(p), read_all(p2))
+
+    def test_state_update_remove_move_add(self):
+        inf, frames = spt_samples.animation(frames=2, per_set=(2, 0, 0), affines=0, curves=0, motion=True)
+        lists = list(apply_frames(inf.header, frames, Limits()))
+        f1 = frames[1]
+        kept = [s for i, s in enumerate(lists[0]) if i not in set(f1.removed)]
+        self.assertEqual(len(lists[1]), len(kept) + len(f1.added))
+        self.assertEqual(lists[1][len(kept):], f1.added)
+        m = f1.motion
+        for before, after in zip(kept, lists[1]):
+            bx = min(max(before[4] // (16 * m.block_size), 0), m.cols - 1)
+            by = min(max(before[5] // (16 * m.block_size), 0), m.rows - 1)
+            dx, dy = m.vectors[by * m.cols + bx]
+            self.assertEqual((after[4], after[5]), (before[4] + dx, before[5] + dy))
+
+    def test_frames_from_lists_reproduces_lists(self):
+        inf, frames = spt_samples.animation(frames=6)
+        lists = list(apply_frames(inf.header, frames, Limits()))
+        # Without motion most strokes persist: the coder must use inter frames.
+        inf2, frames2 = spt_samples.animation(frames=6, motion=False)
+        lists2 = list(apply_frames(inf2.header, frames2, Limits()))
+        for ls in (lists, lists2):
+            coded = frames_from_lists(ls)
+            self.assertEqual(list(apply_frames(inf.header, coded, Limits())), ls)
+        coded2 = frames_from_lists(lists2)
+        self.assertTrue(all(fr.type == INTER for fr in coded2[1:]))
+        self.assertEqual(coded2[0].type, KEY)
+
+
+class Colors(unittest.TestCase):
+    def test_all_codes_round_trip_through_float32(self):
+        for k in range(256):
+            self.assertEqual(colors.to_code(f32(colors.to_linear(k))), k)
+
+    def test_edited_colours_round_to_nearest(self):
+        self.assertEqual(colors.to_code(0.0), 0)
+        self.assertEqual(colors.to_code(1.0), 255)
+        self.assertEqual(colors.to_code(2.0), 255)
+        self.assertEqual(colors.to_code(-1.0), 0)
+        self.assertEqual(colors.to_code(colors.srgb_to_linear(0.5)), round(0.5 * 255))
+
+    @unittest.skipIf(np is None, "numpy not installed")
+    def test_numpy_bounds_agree(self):
+        b = np.array(colors.BOUNDS)
+        lin = np.array([f32(colors.to_linear(k)) for k in range(256)], dtype=np.float32)
+        self.assertEqual(np.searchsorted(b, lin.astype(np.float64), side="right").tolist(), list(range(256)))
+
+
+def through_blender_floats(corners):
+    """What Grease Pencil stores: metres in float32, read back and scaled to pixels."""
+    return [(f32(x / 1000.0) * 1000.0, f32(y / 1000.0) * 1000.0) for (x, y) in corners]
+
+
+class Geometry(unittest.TestCase):
+    def setUp(self):
+        self.inf = spt_samples.info(width=4000, height=3000, sets=((64, 32), (32, 16), (32, 16), (5, 3)))
+        self.h = self.inf.header
+        self.rng = random.Random(3)
+
+    def test_stamps_and_affines_survive_float32_metres(self):
+        for _ in range(3000):
+            s = spt_samples.random_stamp(self.rng, self.inf) if self.rng.random() < 0.7 else \
+                spt_samples.random_affine(self.rng, self.inf)
+            q = through_blender_floats(geometry.quad_corners(s, self.h.sets, self.h.orientations))
+            hint = s[1] if s[0] == STAMP else None
+            tmpl = s[2] if s[0] == STAMP else s[1]
+            got = geometry.quad_to_stroke(q, tmpl, s[-4:], self.h.sets, self.h.orientations, hint)
+            if s[0] == AFFINE and got[0] == STAMP:
+                continue  # an affine stroke that happens to be a stamp: same pixels
+            self.assertEqual(got, s)
+
+    def test_moved_and_rotated(self):
+        s = (STAMP, 0, 1, 2, 1600, 800, 1, 2, 3, 255)
+        q = geometry.quad_corners(s, self.h.sets, self.h.orientations)
+        moved = [(x + 10.25, y - 3.5) for x, y in q]
+        got = geometry.quad_to_stroke(moved, 1, (1, 2, 3, 255), self.h.sets, self.h.orientations, 0)
+        self.assertEqual(got, (STAMP, 0, 1, 2, 1600 + 164, 800 - 56, 1, 2, 3, 255))
+        # Rotating by a table step (22.5 degrees) stays a stamp, with the next orientation.
+        cx, cy = 100.0, 50.0
+        import math
+        t = math.pi / 8
+        rot = [(cx + (x - cx) * math.cos(t) - (y - cy) * math.sin(t), cy + (x - cx) * math.sin(t) + (y - cy) * math.cos(t))
+               for x, y in q]
+        got = geometry.quad_to_stroke(rot, 1, (1, 2, 3, 255), self.h.sets, self.h.orientations, 0)
+        self.assertEqual(got[:4], (STAMP, 0, 1, 3))
+        # Any other angle makes it an affine stroke.
+        t = 0.3
+        rot = [(cx + (x - cx) * math.cos(t) - (y - cy) * math.sin(t), cy + (x - cx) * math.sin(t) + (y - cy) * math.cos(t))
+               for x, y in q]
+        got = geometry.quad_to_stroke(rot, 1, (1, 2, 3, 255), self.h.sets, self.h.orientations, 0)
+        self.assertEqual(got[0], AFFINE)
+        self.assertAlmostEqual(math.hypot(got[4], got[6]) / 16.0, 32.0, delta=0.1)
+
+    def test_set_hint_picks_among_equal_sizes(self):
+        for hint in (1, 2):
+            s = (STAMP, hint, 0, 5, 800, 800, 9, 9, 9, 255)
+            q = through_blender_floats(geometry.quad_corners(s, self.h.sets, self.h.orientations))
+            self.assertEqual(geometry.quad_to_stroke(q, 0, (9, 9, 9, 255), self.h.sets, self.h.orientations, hint), s)
+
+    def test_degenerate_quad_is_rejected(self):
+        q = [(1.0, 1.0)] * 4
+        self.assertIsNone(geometry.quad_to_stroke(q, 0, (0, 0, 0, 255), self.h.sets, self.h.orientations))
+
+    def test_curve_points(self):
+        s = (CURVE, 1, 2, 3, 200, ((16, 32, 40), (-160, 320, 8)))
+        pts = [(f32(x / 1000.0) * 1000.0, f32(y / 1000.0) * 1000.0, f32(w)) for x, y, w in geometry.curve_points(s)]
+        self.assertEqual(geometry.points_to_curve(pts, (1, 2, 3, 200)), s)
+
+    @unittest.skipIf(np is None, "numpy not installed")
+    def test_numpy_agrees_with_reference(self):
+        strokes = [spt_samples.random_stamp(self.rng, self.inf) if i % 3 else spt_samples.random_affine(self.rng, self.inf)
+                   for i in range(2000)]
+        st = [s for s in strokes if s[0] == STAMP]
+        af = [s for s in strokes if s[0] == AFFINE]
+        cs = geometry_np.stamps_to_corners(np.array(st), self.h.sets, self.h.orientations)
+        ca = geometry_np.affines_to_corners(np.array(af))
+        for s, c in zip(st, cs):
+            np.testing.assert_allclose(c, geometry.quad_corners(s, self.h.sets, self.h.orientations), atol=1e-9)
+        for s, c in zip(af, ca):
+            np.testing.assert_allclose(c, geometry.quad_corners(s, self.h.sets, self.h.orientations), atol=1e-9)
+        allc = np.concatenate([cs, ca]).astype(np.float32).astype(np.float64)
+        allc += np.random.default_rng(1).normal(0, 0.01, allc.shape) * (np.arange(len(allc)) % 5 == 0)[:, None, None]
+        tm = [s[2] for s in st] + [s[1] for s in af]
+        col = [s[-4:] for s in st + af]
+        hint = [s[1] for s in st] + [0] * len(af)
+        got = geometry_np.quads_to_strokes(allc, tm, col, self.h.sets, self.h.orientations, hint)
+        ref = [geometry.quad_to_stroke([tuple(p) for p in c.tolist()], t, cc, self.h.sets, self.h.orientations, hh)
+               for c, t, cc, hh in zip(allc, tm, col, hint)]
+        self.assertEqual(got, ref)
+
+
+class BadFiles(Tmp):
+    def setUp(self):
+        super().setUp()
+        inf, frames = spt_samples.animation(frames=3)
+        self.p = self.path("a.spt")
+        write_stored(self.p, inf, frames)
+        self.data = read_all(self.p)
+
+    def test_signature(self):
+        with self.assertRaisesRegex(SptError, "signature"):
+            read_bytes(b"GIF89a" + self.data[6:], "x.spt")
+
+    def test_flipped_byte_in_a_frame_stops_at_that_frame(self):
+        d = bytearray(self.data)
+        d[len(d) // 2] ^= 0x40
+        f = read_bytes(bytes(d), "x.spt")  # recovery: the frames before the damage
+        self.assertFalse(f.complete)
+        self.assertIn("CRC", f.problem)
+        self.assertLess(len(f.frames), 3)
+
+    def test_truncated(self):
+        for cut in (9, 30, len(self.data) // 2, len(self.data) - 5):
+            try:
+                f = read_bytes(self.data[:cut], "x.spt")
+            except SptError as e:
+                self.assertIn("x.spt", str(e))
+                continue
+            self.assertFalse(f.complete)
+
+    def test_range_coded_frame_asks_for_pack(self):
+        d = bytearray(self.data)
+        # Find the first FRAM chunk, set its coding to 1 and fix the CRC.
+        import zlib
+        i = d.find(b"FRAM") - 4
+        length = struct.unpack_from("<I", d, i)[0]
+        d[i + 8 + 5] = 1
+        struct.pack_into("<I", d, i + 8 + length, zlib.crc32(bytes(d[i + 4:i + 8 + length])) & 0xFFFFFFFF)
+        with self.assertRaises(NeedsPack):
+            read_bytes(bytes(d), "x.spt")
+
+    def test_random_corruption_never_crashes(self):
+        import zlib
+        rng = random.Random(5)
+        for _ in range(300):
+            d = bytearray(self.data)
+            for _k in range(rng.randrange(1, 4)):
+                d[rng.randrange(8, len(d))] = rng.randrange(256)
+            # Also fix CRCs so the payload parsers see the damage.
+            pos = 8
+            while pos + 12 <= len(d):
+                ln = struct.unpack_from("<I", d, pos)[0]
+                if pos + 12 + ln > len(d):
+                    break
+                struct.pack_into("<I", d, pos + 8 + ln, zlib.crc32(bytes(d[pos + 4:pos + 8 + ln])) & 0xFFFFFFFF)
+                pos += 12 + ln
+            try:
+                f = read_bytes(bytes(d), "x.spt")
+                for _l in f.live_lists():
+                    pass
+            except SptError:
+                pass
+
+
+class StreamJson(unittest.TestCase):
+    def test_round_trip(self):
+        inf = spt_samples.info()
+        self.assertEqual(stream_json.from_json(stream_json.to_json(inf)), inf)
+
+
+if __name__ == "__main__":
+    unittest.main()

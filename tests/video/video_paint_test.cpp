@@ -1,0 +1,160 @@
+// run_video_paint / video_paint on real files: PNG sequences written by the test, the shared
+// media clips, missing frames, --skip-bad-frames, ROI files and the stop flag.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <fstream>
+
+#include "io/image_io.hpp"
+#include "io/progress.hpp"
+#include "spt/reader.hpp"
+#include "synthetic.hpp"
+#include "video/video_paint.hpp"
+
+using namespace spt;
+using namespace spt::video;
+
+namespace {
+
+VideoPaintOptions options(const std::string& in, const std::string& out) {
+    VideoPaintOptions o;
+    o.input = in;
+    o.output = out;
+    o.sets = 4;
+    o.paint.seed = 3;
+    o.paint.threads = 1;
+    o.paint.max_strokes = 300;
+    o.max_inter_strokes = 100;
+    o.install_signal_handlers = false;
+    return o;
+}
+
+// Writes frames first..last of a moving scene as dir/seq.####.png, leaving out `missing`.
+void write_sequence(const std::filesystem::path& dir, int first, int last, int missing = -1) {
+    const uint32_t w = 64, h = 48;
+    for (int f = first; f <= last; ++f) {
+        if (f == missing) continue;
+        const auto rgb = spt_test::scene_frame(0, f, w, h);
+        char name[64];
+        std::snprintf(name, sizeof name, "seq.%04d.png", f);
+        ASSERT_TRUE(io::write_image((dir / name).string(), w, h, rgb.data()).ok());
+    }
+}
+
+}  // namespace
+
+TEST(VideoPaint, PaintsAPngSequence) {
+    const auto dir = spt_test::temp_dir("seq");
+    write_sequence(dir, 1, 8);
+    auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
+    o.fps = "30000/1001";
+    io::Progress progress(io::ProgressMode::None, "paint", 0);
+    VideoPaintReport rep;
+    Status st = video_paint(o, progress, &rep);
+    ASSERT_TRUE(st.ok()) << st.error().message;
+    EXPECT_EQ(rep.frames, 8u);
+    auto r = Reader::open(o.output);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_EQ((*r)->frames().size(), 8u);
+    EXPECT_EQ((*r)->info().header.fps, (Rational{30000, 1001}));
+    EXPECT_TRUE((*r)->has_index());
+    std::filesystem::remove_all(dir);
+}
+
+TEST(VideoPaint, MissingFrameIsAnErrorNamingIt) {
+    const auto dir = spt_test::temp_dir("missing");
+    write_sequence(dir, 1, 6, 4);
+    auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
+    io::Progress progress(io::ProgressMode::None, "paint", 0);
+    Status st = video_paint(o, progress);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().message.find("seq.0004.png"), std::string::npos) << st.error().message;
+    EXPECT_FALSE(std::filesystem::exists(o.output)) << "no output after a failure";
+    EXPECT_FALSE(std::filesystem::exists(o.output + ".partial"));
+
+    // --skip-bad-frames: frame 4 repeats frame 3, and the encode goes on.
+    o.skip_bad_frames = true;
+    VideoPaintReport rep;
+    st = video_paint(o, progress, &rep);
+    ASSERT_TRUE(st.ok()) << st.error().message;
+    EXPECT_EQ(rep.frames, 6u);
+    EXPECT_EQ(rep.skipped_frames, 1u);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(VideoPaint, UnreadableFrameIsSkippedWhenAsked) {
+    const auto dir = spt_test::temp_dir("unreadable");
+    write_sequence(dir, 1, 5);
+    std::ofstream(dir / "seq.0003.png") << "not a png";
+    auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
+    io::Progress progress(io::ProgressMode::None, "paint", 0);
+    Status st = video_paint(o, progress);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().message.find("seq.0003.png"), std::string::npos) << st.error().message;
+    o.skip_bad_frames = true;
+    VideoPaintReport rep;
+    ASSERT_TRUE(video_paint(o, progress, &rep).ok());
+    EXPECT_EQ(rep.skipped_frames, 1u);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(VideoPaint, StopFlagLeavesAValidFileWithTheFinishedFrames) {
+    const auto dir = spt_test::temp_dir("stop");
+    write_sequence(dir, 0, 11);
+    auto o = options((dir / "seq.%04d.png").string(), (dir / "out.spt").string());
+    std::atomic<bool> stop{false};
+    o.stop = &stop;
+    o.on_frame = [&](uint64_t done) {
+        if (done == 5) stop = true;
+    };
+    io::Progress progress(io::ProgressMode::None, "paint", 0);
+    VideoPaintReport rep;
+    Status st = video_paint(o, progress, &rep);
+    EXPECT_FALSE(st.ok()) << "an interrupted encode reports it";
+    EXPECT_TRUE(rep.interrupted);
+    EXPECT_FALSE(std::filesystem::exists(o.output + ".partial"));
+    auto r = Reader::open(o.output);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_TRUE((*r)->complete());
+    ASSERT_EQ((*r)->frames().size(), 5u);
+    EXPECT_TRUE((*r)->strokes_at(4).ok());
+    std::filesystem::remove_all(dir);
+}
+
+TEST(VideoPaint, RoiFileBecomesRoiRecords) {
+    const auto dir = spt_test::temp_dir("roi");
+    write_sequence(dir, 10, 17);
+    std::ofstream(dir / "rois.json") << R"({"rois":[{"frames":"12-14","x":8,"y":8,"w":20,"h":16}]})";
+    auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
+    o.roi_file = (dir / "rois.json").string();
+    io::Progress progress(io::ProgressMode::None, "paint", 0);
+    ASSERT_TRUE(video_paint(o, progress).ok());
+    auto r = Reader::open(o.output);
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ((*r)->info().rois.size(), 1u);
+    const Roi& roi = (*r)->info().rois[0];
+    EXPECT_EQ(roi.first_frame, 2u) << "input frame 12 is output frame 2";
+    EXPECT_EQ(roi.last_frame, 4u);
+    EXPECT_EQ(roi.w, 20u);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(VideoPaint, ReadsAVideoFileWithItsFrameRate) {
+    const std::string clip = std::string(SPT_MEDIA_DIR) + "/video/butterfly-cartoon.avi";
+    if (!std::filesystem::exists(clip)) GTEST_SKIP() << "no shared media at " << clip;
+    const auto dir = spt_test::temp_dir("avi");
+    auto o = options(clip, (dir / "b.spt").string());
+    o.frames = "0-3";
+    o.paint.max_strokes = 200;
+    io::Progress progress(io::ProgressMode::None, "paint", 0);
+    VideoPaintReport rep;
+    Status st = video_paint(o, progress, &rep);
+    ASSERT_TRUE(st.ok()) << st.error().message;
+    EXPECT_EQ(rep.frames, 4u);
+    auto r = Reader::open(o.output);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ((*r)->info().header.fps, (Rational{18, 1}));
+    EXPECT_EQ((*r)->info().header.width, 520u);
+    std::filesystem::remove_all(dir);
+}
