@@ -1,5 +1,5 @@
 """Times the add-on's import and export inside Blender (run by blender_bench.sh).
-args after --: ZIP FILE.spt WORKDIR [export]"""
+args after --: ZIP SPT FILE.spt WORKDIR import|export"""
 
 import os
 import sys
@@ -7,29 +7,36 @@ import time
 
 import bpy
 
-zip_path, path, work = sys.argv[sys.argv.index("--") + 1:][:3]
-do_export = "export" in sys.argv[sys.argv.index("--") + 1:]
+zip_path, spt, path, work, mode = sys.argv[sys.argv.index("--") + 1:][:5]
 import addon_utils  # noqa: E402
 bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
 addon_utils.enable("spt_grease_pencil", default_set=True)
 from spt_grease_pencil.blender import exporter, importer  # noqa: E402
-from spt_grease_pencil.io import read_file  # noqa: E402
 
-t0 = time.time()
-f = read_file(path)
-lists = list(f.live_lists())
-t1 = time.time()
-print(f"BENCH read+state (python file layer): {t1 - t0:.2f} s for {sum(map(len, lists))} strokes")
-del lists, f
-t0 = time.time()
-obj, summary = importer.import_file(bpy.context, path)
-t1 = time.time()
-print(f"BENCH import: {t1 - t0:.2f} s, {summary['strokes']} strokes, {summary['frames']} frames")
-if do_export:
-    out = os.path.join(work, "bench_export.stored.spt")
-    t0 = time.time()
-    s = exporter.export_file(bpy.context, obj, out, stored=True)
-    t1 = time.time()
-    print(f"BENCH export (stored, no pack): {t1 - t0:.2f} s, {s['strokes']} strokes")
-    same = [len(x) for x in read_file(out).live_lists()] == [len(x) for x in read_file(path).live_lists()]
-    print(f"BENCH export matches the input stroke counts: {same}")
+
+def fmt(d):
+    return ", ".join(f"{k} {v:.2f} s" for k, v in d.items())
+
+
+t0, c0 = time.perf_counter(), time.process_time()
+obj, summary = importer.import_file(bpy.context, path, spt)
+t1, c1 = time.perf_counter(), time.process_time()
+print(f"BENCH import: {t1 - t0:.2f} s wall, {c1 - c0:.2f} s CPU in Blender ({fmt(summary['seconds'])}), "
+      f"{summary['strokes']} strokes, {summary['frames']} frames, {summary['layers']} layers")
+if mode == "export":
+    out = os.path.join(work, "bench_export.spt")
+    t0, c0 = time.perf_counter(), time.process_time()
+    s = exporter.export_file(bpy.context, obj, out, spt)
+    t1, c1 = time.perf_counter(), time.process_time()
+    print(f"BENCH export: {t1 - t0:.2f} s wall, {c1 - c0:.2f} s CPU in Blender ({fmt(s['seconds'])}), "
+          f"{s['strokes']} strokes, {os.path.getsize(out)} bytes (input {os.path.getsize(path)})")
+    # Check: the export holds the imported strokes (stroke lists, through spt pack --stored).
+    from spt_grease_pencil.io import read_file  # noqa: E402
+    from spt_grease_pencil.spt_tool import pack_stored  # noqa: E402
+    a, b = os.path.join(work, "a.stored.spt"), os.path.join(work, "b.stored.spt")
+    pack_stored(spt, path, a)
+    pack_stored(spt, out, b)
+    la = list(read_file(a, columnar=True).live_lists())
+    lb = list(read_file(b, columnar=True).live_lists())
+    same = len(la) == len(lb) and all(x.rows.shape == y.rows.shape and (x.rows == y.rows).all() for x, y in zip(la, lb))
+    print(f"BENCH export holds the same stroke lists as the input: {same}")

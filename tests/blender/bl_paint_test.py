@@ -1,6 +1,9 @@
-"""Blender test: "Paint to strokes" through the operator (blocking path) on a real still, the
-import checked against `spt info --json --frames`, the unedited export rendered bit-identically
-by `spt render`, and Cancel of a running paint. Skips (77) until spt paint works."""
+"""Blender test: "Paint to strokes" through the operator (blocking path) on short clips made here:
+the scene's rendered frame sequence (scene.render.filepath frames) and a chosen file pattern,
+plus a still. Each result is imported and checked against `spt info --json --frames` (GP frames
+follow the video frames, strokes per frame), then exported unedited and every frame rendered by
+`spt render` from both files and compared byte for byte. Skips (77) without a working spt paint.
+Cancel is tested without Blender in test_paint_job.py."""
 
 import json
 import os
@@ -9,75 +12,132 @@ import sys
 import time
 
 import bpy
+import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bl_common as C  # noqa: E402
 
 zip_path, spt, work, media = C.args()
-still = os.path.join(media, "stills", "chelsea.png")
-if not C.spt_works(spt, "paint") or not os.path.isfile(still):
-    print(f"SKIP: needs a working 'spt paint' ({spt or 'not built'}) and {still}")
+if not C.spt_works(spt, "paint"):
+    print(f"SKIP: needs a working 'spt paint' ({spt or 'not built'})")
     sys.exit(C.SKIP)
 C.install(zip_path, spt)
-from spt_grease_pencil.blender import spt_tool  # noqa: E402
-
 scene = bpy.context.scene
-st = scene.spt_paint
-st.source = 'FILE'
-st.filepath = still
-out = os.path.join(work, "painted.spt")
-if os.path.exists(out):
-    os.unlink(out)
-st.output = out
-st.sets = 3
-st.max_strokes = 600
-st.seed = 3
-t = time.time()
-r = bpy.ops.spt.paint_strokes(blocking=True)
-print(f"paint + import: {time.time() - t:.1f} s")
-C.check(r == {'FINISHED'}, f"paint operator returned {r}")
-obj = bpy.context.active_object
-C.check(obj is not None and obj.type == 'GPENCIL', "the painting was imported")
 
-info = json.loads(subprocess.run([spt, "info", out, "--json", "--frames"], capture_output=True,
-                                 text=True, check=True).stdout)
-C.check((scene.render.resolution_x, scene.render.resolution_y) == (info["canvas"]["width"], info["canvas"]["height"]),
-        "canvas size")
-C.check(len(obj.data.materials) == len(info["templates"]) + 1, "one material per template (+ curves)")
-frames = info["frame_list"]
-C.check(scene.frame_end - scene.frame_start + 1 == len(frames) == info["frames_found"], "frame count")
-for fr in frames:
-    number = scene.frame_start + fr["index"]
-    n = sum(len(f.strokes) for l in obj.data.layers for f in l.frames if f.frame_number == number)
-    C.check(n == fr["live"], f"frame {fr['index']}: {n} strokes, spt info says {fr['live']}")
-C.check(all(l.info.startswith("set ") for l in obj.data.layers), "layers are stroke sets")
 
-# Unedited export (range-coded through spt pack) renders bit-identically.
-exp = os.path.join(work, "exported.spt")
-r = bpy.ops.export_scene.spt(filepath=exp)
-C.check(r == {'FINISHED'}, f"export returned {r}")
-# Stroke lists first (independent of the renderer): both files through spt pack --stored.
-from spt_grease_pencil.io import read_file  # noqa: E402
-lists = []
-for name in ("painted.spt", "exported.spt"):
-    st_path = os.path.join(work, name + ".stored")
-    subprocess.run([spt, "pack", os.path.join(work, name), "--stored", "-o", st_path], check=True)
-    lists.append(list(read_file(st_path).live_lists()))
-C.check(lists[0] == lists[1], "the exported painting holds the same strokes in the same order")
-print(f"stroke lists identical: {sum(map(len, lists[0]))} strokes")
-for name in ("painted.spt", "exported.spt"):
-    p = subprocess.run([spt, "render", os.path.join(work, name), "-o", os.path.join(work, name + ".png")],
-                       capture_output=True, text=True)
-    C.check(p.returncode == 0, f"spt render {name}: {p.stderr}")
-a = open(os.path.join(work, "painted.spt.png"), "rb").read()
-b = open(os.path.join(work, "exported.spt.png"), "rb").read()
-C.check(a == b, "the exported painting renders bit for bit like spt's")
+def write_clip(pattern, frames, w, h, phase):
+    """Frames first..last of a small animation (a disc and a bar moving over a gradient) as 8-bit
+    PNGs at pattern % frame number (Blender's image writer, no colour transform)."""
+    y, x = np.mgrid[0:h, 0:w].astype(np.float32)
+    for k in frames:
+        t = k + phase
+        img = np.zeros((h, w, 4), dtype=np.float32)
+        img[..., 0] = x / w
+        img[..., 1] = 0.3 + 0.4 * y / h
+        img[..., 2] = 0.6
+        img[..., 3] = 1.0
+        disc = (x - (20 + 5 * t)) ** 2 + (y - h / 2) ** 2 < (h / 4) ** 2
+        img[disc] = (0.9, 0.2, 0.1, 1.0)
+        bar = (np.abs(x - w / 2) < 4) & (np.abs(y - (10 + 3 * t) % h) < 12)
+        img[bar] = (0.05, 0.05, 0.3, 1.0)
+        im = bpy.data.images.new(f"clip{k}", width=w, height=h, alpha=True)
+        im.pixels.foreach_set(img[::-1].ravel())  # Blender rows are bottom first
+        im.filepath_raw = pattern % k
+        im.file_format = 'PNG'
+        im.save()
+        bpy.data.images.remove(im)
 
-# Cancel stops the subprocess and leaves no output file.
-big = os.path.join(work, "cancelled.spt")
-job = spt_tool.PaintJob(spt, still, big, {"max_strokes": 200000, "seed": 1})
-time.sleep(1.0)
-job.cancel()
-C.check(job.poll() is not None, "spt paint stopped")
-C.check(not os.path.exists(big), "no half-written output after Cancel")
+
+def paint(label, output, **settings):
+    st = scene.spt_paint
+    for k, v in settings.items():
+        setattr(st, k, v)
+    st.output = output
+    st.sets = 3
+    st.max_strokes = 300
+    st.seed = 3
+    if os.path.exists(output):
+        os.unlink(output)
+    before = set(bpy.data.objects)
+    t = time.time()
+    r = bpy.ops.spt.paint_strokes(blocking=True)
+    print(f"{label}: paint + import {time.time() - t:.1f} s")
+    C.check(r == {'FINISHED'}, f"{label}: paint operator returned {r}")
+    new = [o for o in bpy.data.objects if o not in before and o.type == 'GPENCIL']
+    C.check(len(new) == 1, f"{label}: the painting was imported as one Grease Pencil object")
+    C.check(os.path.isfile(output), f"{label}: the painting was written to {output}")
+    return new[0]
+
+
+def check_import(label, obj, path, want_frames):
+    info = json.loads(subprocess.run([spt, "info", path, "--json", "--frames"], capture_output=True,
+                                     text=True, check=True).stdout)
+    frames = info["frame_list"]
+    C.check(len(frames) == info["frames_found"] == want_frames,
+            f"{label}: {info['frames_found']} frames in the file, expected {want_frames}")
+    C.check((scene.render.resolution_x, scene.render.resolution_y) == (info["canvas"]["width"], info["canvas"]["height"]),
+            f"{label}: canvas size")
+    C.check(scene.frame_end - scene.frame_start + 1 == want_frames, f"{label}: scene frame range follows the file")
+    fps = scene.render.fps / scene.render.fps_base
+    C.check(abs(fps - info["fps"]["value"]) < 1e-6, f"{label}: scene fps {fps} vs file {info['fps']['value']}")
+    C.check(len(obj.data.materials) == len(info["templates"]) + 1, f"{label}: one material per template (+ curves)")
+    for layer in obj.data.layers:
+        numbers = sorted(f.frame_number for f in layer.frames)
+        C.check(numbers == list(range(scene.frame_start, scene.frame_start + want_frames)),
+                f"{label}: layer '{layer.info}' has GP frames {numbers}: one per video frame")
+    for fr in frames:
+        number = scene.frame_start + fr["index"]
+        n = sum(len(f.strokes) for l in obj.data.layers for f in l.frames if f.frame_number == number)
+        C.check(n == fr["live"], f"{label}: frame {fr['index']}: {n} strokes, spt info says {fr['live']}")
+    return info
+
+
+def check_export_renders_identically(label, obj, path):
+    exp = os.path.join(work, label + ".exported.spt")
+    bpy.context.view_layer.objects.active = obj
+    r = bpy.ops.export_scene.spt(filepath=exp)  # range-coded through spt pack
+    C.check(r == {'FINISHED'}, f"{label}: export returned {r}")
+    outs = []
+    for name, p in (("orig", path), ("exp", exp)):
+        pat = os.path.join(work, f"{label}.{name}.####.png")
+        p = subprocess.run([spt, "render", p, "-o", pat], capture_output=True, text=True)
+        C.check(p.returncode == 0, f"{label}: spt render {name}: {p.stderr}")
+        outs.append(pat.replace("####", "%04d"))
+    n = scene.frame_end - scene.frame_start + 1
+    for k in range(n):
+        a, b = (open(o % k, "rb").read() for o in outs)
+        C.check(a == b, f"{label}: frame {k} of the unedited export renders differently")
+    sizes = os.path.getsize(path), os.path.getsize(exp)
+    print(f"{label}: {n} frames render bit-identically; file {sizes[0]} bytes, export {sizes[1]} bytes")
+
+
+# 1. The scene's rendered frame sequence: frames 1-8 of render/f_####.png (what F12 > Render
+#    Animation writes for this output path), key frames every 4 frames.
+os.makedirs(os.path.join(work, "render"), exist_ok=True)
+scene.frame_start, scene.frame_end = 1, 8
+scene.render.fps, scene.render.fps_base = 12, 1.0
+scene.render.filepath = os.path.join(work, "render", "f_")
+scene.render.image_settings.file_format = 'PNG'
+write_clip(os.path.join(work, "render", "f_%04d.png"), range(1, 9), 96, 64, 0)
+out = os.path.join(work, "rendered.spt")
+obj = paint("rendered frames", out, source='RENDER', key_interval=4)
+info = check_import("rendered frames", obj, out, 8)
+C.check(info["key_frames"][:2] == [0, 4] and len(info["key_frames"]) == 2,
+        f"key frames every 4 frames: {info['key_frames']}")
+C.check(info["fps"]["value"] == 12, "the scene's frame rate was passed to spt paint")
+check_export_renders_identically("rendered", obj, out)
+
+# 2. A chosen file pattern (6 other frames), key frames by spt's default interval.
+os.makedirs(os.path.join(work, "clip"), exist_ok=True)
+write_clip(os.path.join(work, "clip", "c.%04d.png"), range(1, 7), 80, 48, 3)
+out = os.path.join(work, "pattern.spt")
+obj = paint("file pattern", out, source='FILE', filepath=os.path.join(work, "clip", "c.####.png"), key_interval=0)
+check_import("file pattern", obj, out, 6)
+check_export_renders_identically("pattern", obj, out)
+
+# 3. A still: one frame.
+out = os.path.join(work, "still.spt")
+obj = paint("still", out, source='FILE', filepath=os.path.join(work, "clip", "c.0002.png"))
+check_import("still", obj, out, 1)
+check_export_renders_identically("still", obj, out)
 print("OK")

@@ -8,7 +8,6 @@ import subprocess
 import sys
 
 import bpy
-import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bl_common as C  # noqa: E402

@@ -1,5 +1,6 @@
 """Cross-check of the spec: the add-on's bpy-free reader decodes every golden stored file of
-tests/format/golden/ (written by libspt). Exit 77 (skipped) when there are none yet."""
+tests/format/golden/ (written by libspt), and with numpy its fast path gives the same strokes.
+Exit 77 (skipped) when there are none yet."""
 
 import glob
 import os
@@ -8,6 +9,11 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "blender_addon"))
 from spt_grease_pencil.io import SptError, read_file  # noqa: E402
+
+try:
+    import numpy as np
+except ImportError:  # the reference reader alone
+    np = None
 
 golden = sorted(glob.glob(os.path.join(HERE, "..", "format", "golden", "*.stored.spt")))
 if not golden:
@@ -26,6 +32,11 @@ for p in golden:
         if expect_error or not ok:
             print(f"  FAIL: {name} should {'fail' if expect_error else 'be complete'}")
             bad += 1
+        if np is not None:  # the numpy fast path must decode the same strokes
+            fc = read_file(p, columnar=True)
+            if [t.to_tuples() for t in fc.live_lists()] != list(f.live_lists()):
+                print(f"  FAIL: {name}: the numpy reader disagrees with the reference")
+                bad += 1
     except SptError as e:
         print(f"{name}: error: {e}")
         if not expect_error:

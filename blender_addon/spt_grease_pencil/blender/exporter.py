@@ -4,20 +4,24 @@ Per scene frame, the strokes of the visible layers are gathered and put back in 
 their ordinal (gp_v2.py); strokes drawn by hand have none and go right after the stroke before
 them in their layer (or above the layers below theirs). Quads become stamps when they still match
 a stamp of their set size and a table orientation, affine strokes otherwise; everything else is a
-curve. The live lists are coded as key/inter frames (writer.frames_from_lists), written in stored
-mode with the Python writer, then range-coded by `spt pack`.
+curve. All of it on numpy StrokeTables (io/strokes_np.py): the live lists are coded as key/inter
+frames (state_np.frames_from_tables: strokes that all moved with a block motion field, as in the
+painter's inter frames, are coded with that field again), written in stored mode by the Python
+writer, then range-coded by `spt pack`.
 """
 
 import os
+import time
 
 import numpy as np
 
-from ..io import colors, geometry_np, stream_json
+from ..io import colors, geometry_np, state_np, stream_json
 from ..io.geometry import points_to_curve
 from ..io.model import Header, SptError, StreamInfo, default_orientations
-from ..io.writer import frames_from_lists, write_stored
+from ..io.strokes_np import CURVE_ID, NCOL, StrokeTable
+from ..io.writer import write_stored
+from ..spt_tool import pack_coded, temp_path
 from . import gp
-from .spt_tool import pack_coded, temp_path
 
 BOUNDS = np.array(colors.BOUNDS, dtype=np.float64)
 
@@ -57,83 +61,102 @@ def _material_tables(obj):
     return tmpl, fill_base, line_base
 
 
-def collect_frame(obj, number: int, info: StreamInfo, tables, warnings: list):
-    """The live stroke list the object shows at scene frame `number`."""
+class CurvePool:
+    """The curve pool of the exported tables, deduplicated by content so that equal curves have
+    equal rows (the frame coder matches strokes by row)."""
+
+    def __init__(self):
+        self.curves = []
+        self._ids = {}
+
+    def add(self, pts) -> int:
+        arr = np.asarray(pts, dtype=np.int32).reshape(-1, 3)
+        key = arr.tobytes()
+        i = self._ids.get(key)
+        if i is None:
+            i = self._ids[key] = len(self.curves)
+            self.curves.append(arr)
+        return i
+
+
+def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, warnings: list):
+    """The strokes of one GP frame as (rows (n, NCOL), ordinal (n,) or -1), in the frame's order;
+    strokes that cannot be stored are left out with a warning."""
     h = info.header
     tmpl_of, fill_base, line_base = tables
     nmat = len(tmpl_of) - 1
-    ntemplates = len(info.templates)
-    entries = []   # (key, layer index, position, stroke)
+    n = d.count
+    mi = np.where((d.material_index >= 0) & (d.material_index < nmat), d.material_index, nmat)
+    t = tmpl_of[mi]
+    is_quad = (t >= 0) & (t < len(info.templates)) & (d.npoints == 4) & d.is_imported_quad
+    rows = np.zeros((n, NCOL), dtype=np.int32)
+    keep = np.ones(n, dtype=bool)
+    q = np.flatnonzero(is_quad)
+    if q.size:
+        co = d.co4[q].reshape(-1, 4, 3).astype(np.float64) * 1000.0
+        corners = np.stack([co[:, :, 0], -co[:, :, 2]], axis=-1)  # px, image y down
+        base = fill_base[mi[q]]
+        fc = d.fill[q].astype(np.float64)
+        rgb = base[:, :3] * (1.0 - fc[:, 3:4]) + fc[:, :3] * fc[:, 3:4]
+        rgba = np.concatenate([linear_to_codes(rgb), d.alpha[q, None]], axis=1)
+        qrows, valid = geometry_np.quads_to_rows(corners, t[q], rgba, h.sets, h.orientations, d.set_hint[q])
+        rows[q] = qrows
+        keep[q[~valid]] = False
+        if not valid.all():
+            warnings.append(f"{where}: {int((~valid).sum())} degenerate quad(s) left out")
+    for i in np.flatnonzero(~is_quad).tolist():
+        if d.npoints[i] == 0:
+            keep[i] = False
+            continue
+        co, pr, st, vc = d.points(i)
+        base = line_base[mi[i]]
+        vcm = vc.astype(np.float64).mean(axis=0)
+        rgb = base[:3] * (1.0 - vcm[3]) + vcm[:3] * vcm[3]
+        alpha = int(np.clip(np.floor(255.0 * base[3] * float(st.astype(np.float64).mean()) + 0.5), 0, 255))
+        xy = co.astype(np.float64) * 1000.0
+        widths = pr.astype(np.float64) * float(d.line_width[i])
+        s = points_to_curve(zip(xy[:, 0].tolist(), (-xy[:, 2]).tolist(), widths.tolist()),
+                            tuple(linear_to_codes(rgb).tolist()) + (alpha,))
+        if s is None:
+            keep[i] = False
+            warnings.append(f"{where}: a stroke out of range was left out")
+            continue
+        rows[i] = StrokeTable.from_tuples([s]).rows[0]
+        rows[i, CURVE_ID] = pool.add(s[5])
+    return rows[keep], d.ordinal[keep]
+
+
+def merge_layers(parts):
+    """One frame's live list from its visible layers' (rows, ordinal) bottom to top. Strokes
+    without an ordinal (drawn by hand) take the one of the stroke before them in their layer, or
+    the largest of the layers below; then a stable sort by (ordinal, layer, position)."""
+    all_rows, keys, layer_ix, pos = [], [], [], []
     max_key = -1
-    for li, layer in enumerate(gp.layers(obj)):
-        if gp.layer_hidden(layer):
-            continue
-        fr = gp.frame_at(layer, number)
-        if fr is None:
-            continue
-        d = gp.read_frame(fr)
-        n = d.count
+    for li, (rows, ordinal) in enumerate(parts):
+        n = rows.shape[0]
         if n == 0:
             continue
-        mi = np.where((d.material_index >= 0) & (d.material_index < nmat), d.material_index, nmat)
-        t = tmpl_of[mi]
-        is_quad = (t >= 0) & (t < ntemplates) & (d.npoints == 4) & (d.hardness < 1.0)
-        strokes = [None] * n
-        keys = [None] * n
-        q = np.nonzero(is_quad)[0]
-        if q.size:
-            starts = d.offsets[q]
-            corners = d.xy[starts[:, None] + np.arange(4)[None, :]] * 1000.0  # (Nq, 4, 2) px
-            base = fill_base[mi[q]]
-            fc = d.fill[q].astype(np.float64)
-            rgb = base[:, :3] * (1.0 - fc[:, 3:4]) + fc[:, :3] * fc[:, 3:4]
-            alpha = np.where(d.aspect_x[q] >= 0.999, 255,
-                             np.clip(np.floor((d.aspect_x[q].astype(np.float64) - 0.5) * 512 + 0.5), 0, 255))
-            rgba = np.concatenate([linear_to_codes(rgb), alpha.astype(np.int64)[:, None]], axis=1)
-            made = geometry_np.quads_to_strokes(corners, t[q], rgba, h.sets, h.orientations,
-                                                d.line_width[q].astype(np.int64) - 1)
-            ords = np.floor((d.hardness[q].astype(np.float64) - 0.5) * 2.0 ** 24 + 0.5).astype(np.int64).tolist()
-            for j, i in enumerate(q.tolist()):
-                strokes[i] = made[j]
-                keys[i] = ords[j]
-                if made[j] is None:
-                    warnings.append(f"frame {number}, layer '{gp.layer_name(layer)}': a degenerate quad was left out")
-        for i in np.nonzero(~is_quad)[0].tolist():
-            a, b = int(d.offsets[i]), int(d.offsets[i + 1])
-            if b <= a:
-                continue
-            pr, st, vc = d.point_attrs(i)
-            base = line_base[mi[i]]
-            vcm = vc.astype(np.float64).mean(axis=0)
-            rgb = base[:3] * (1.0 - vcm[3]) + vcm[:3] * vcm[3]
-            alpha = int(np.clip(np.floor(255.0 * base[3] * float(st.astype(np.float64).mean()) + 0.5), 0, 255))
-            pts = d.xy[a:b] * 1000.0
-            widths = pr.astype(np.float64) * float(d.line_width[i])
-            s = points_to_curve(zip(pts[:, 0].tolist(), pts[:, 1].tolist(), widths.tolist()),
-                                tuple(linear_to_codes(rgb).tolist()) + (alpha,))
-            strokes[i] = s
-            if s is None:
-                warnings.append(f"frame {number}, layer '{gp.layer_name(layer)}': a stroke out of range was left out")
-            if d.uv_translation[i, 1] == 1.0:
-                keys[i] = int(d.uv_translation[i, 0])
-        # Strokes without an ordinal follow the stroke before them in their layer, or sit
-        # above the layers below.
-        last = max_key
-        for i in range(n):
-            if keys[i] is None:
-                keys[i] = last
-            else:
-                last = keys[i]
-            if strokes[i] is not None:
-                entries.append((keys[i], li, i, strokes[i]))
-        if entries:
-            max_key = max(max_key, max(e[0] for e in entries))
-    entries.sort(key=lambda e: (e[0], e[1], e[2]))
-    return [e[3] for e in entries]
+        known = ordinal >= 0
+        last = np.maximum.accumulate(np.where(known, np.arange(n), -1))
+        k = np.where(last >= 0, ordinal[np.maximum(last, 0)], max_key)
+        max_key = max(max_key, int(k.max()))
+        all_rows.append(rows)
+        keys.append(k)
+        layer_ix.append(np.full(n, li))
+        pos.append(np.arange(n))
+    if not all_rows:
+        return np.zeros((0, NCOL), dtype=np.int32)
+    keys, layer_ix, pos = np.concatenate(keys), np.concatenate(layer_ix), np.concatenate(pos)
+    order = np.lexsort((pos, layer_ix, keys))
+    return np.concatenate(all_rows)[order]
 
 
 def export_file(context, obj, path: str, spt_path: str = "", stored: bool = False, progress=None):
-    """Writes `path`. Returns a summary dict; raises SptError / SptToolError."""
+    """Writes `path`. Returns a summary dict; raises SptError / SptToolError. summary["seconds"]
+    splits the time: gp_read (Grease Pencil data, foreach_get), strokes (quads -> strokes, layer
+    merge), write (frame coding + stored file), pack (spt pack)."""
+    t_start = time.perf_counter()
+    gp_read = 0.0
     if obj is None or obj.type != 'GPENCIL':
         raise SptError("select a Grease Pencil object to export")
     scene = context.scene
@@ -143,23 +166,49 @@ def export_file(context, obj, path: str, spt_path: str = "", stored: bool = Fals
         raise SptError("the scene frame range is empty")
     tables = _material_tables(obj)
     warnings = []
+    pool = CurvePool()
+    visible = [(li, layer, gp.frame_index(layer)) for li, layer in enumerate(gp.layers(obj))
+               if not gp.layer_hidden(layer)]
+    held = {}   # layer index -> (GP frame number, (rows, ordinal)): a held frame is read once
     lists = []
     count = last - first + 1
     for k, number in enumerate(range(first, last + 1)):
-        lists.append(collect_frame(obj, number, info, tables, warnings))
+        parts = []
+        for li, layer, index in visible:
+            fr = gp.frame_at_sorted(index, number)
+            if fr is None:
+                continue
+            if li not in held or held[li][0] != fr.frame_number:
+                where = f"frame {fr.frame_number}, layer '{gp.layer_name(layer)}'"
+                t = time.perf_counter()
+                d = gp.read_frame(fr)
+                gp_read += time.perf_counter() - t
+                held[li] = (fr.frame_number, read_layer_frame(d, info, tables, pool, where, warnings))
+            parts.append(held[li][1])
+        lists.append(StrokeTable(merge_layers(parts), pool.curves))
         if progress:
             progress(k + 1, count)
-    frames = frames_from_lists(lists)
+    held.clear()
+    t_collect = time.perf_counter()
+    blocks = [int(b) for b in obj.data.get("spt_motion_blocks", [])]
+    blocks += [b for b in (16, 32) if b not in blocks]
+    frames = state_np.frames_from_tables(lists, pool.curves, info.header.width, info.header.height, blocks)
+    t_pack = None
     if stored:
         write_stored(path, info, frames)
     else:
         tmp = temp_path()
         try:
             write_stored(tmp, info, frames)
+            t_pack = time.perf_counter()
             pack_coded(spt_path, tmp, path)
         finally:
             try:
                 os.unlink(tmp)
             except OSError:
                 pass
-    return {"frames": len(frames), "strokes": sum(len(x) for x in lists), "warnings": warnings}
+    t_end = time.perf_counter()
+    seconds = {"gp_read": gp_read, "strokes": t_collect - t_start - gp_read,
+               "write": (t_pack or t_end) - t_collect, "pack": t_end - t_pack if t_pack else 0.0}
+    return {"frames": len(frames), "strokes": sum(len(x) for x in lists), "warnings": warnings,
+            "seconds": seconds}

@@ -119,85 +119,93 @@ def new_frame(layer, number: int):
     return layer.frames.new(number)
 
 
-def frame_at(layer, number: int):
-    """The layer's frame shown at scene frame `number` (its latest key at or before it)."""
-    best = None
-    for fr in layer.frames:
-        if fr.frame_number <= number and (best is None or fr.frame_number > best.frame_number):
-            best = fr
-    return best
+def frame_index(layer):
+    """(sorted frame numbers, frames) of a layer, for frame_at_sorted."""
+    frs = sorted(layer.frames, key=lambda f: f.frame_number)
+    return [f.frame_number for f in frs], frs
+
+
+def frame_at_sorted(index, number: int):
+    """The frame shown at scene frame `number` (the latest key at or before it) or None."""
+    import bisect
+    numbers, frs = index
+    k = bisect.bisect_right(numbers, number) - 1
+    return frs[k] if k >= 0 else None
 
 
 # ---------------------------------------------------------------- writing strokes in bulk
+#
+# Measured on Blender 3.4 (see the README): strokes.new() then points.add() in one loop is slower
+# than all strokes.new() first, then points.add() over the collection; per stroke only new(),
+# points.add() and the point coordinates (+ uv_fill) cross into Blender, every stroke-level value
+# is one foreach_set per frame. GPv2 has no bulk access to the points of several strokes.
 
-def add_quads(frame, corners_m: np.ndarray, material_index, fill_rgba, ordinal, set_hint, alpha):
-    """Appends N textured quads. corners_m: (N, 4, 2) XY in metres (image y down, not negated)."""
-    n = corners_m.shape[0]
+def fill_frame(frame, is_curve, quad_co, curves, material_index, fill_rgba, ordinal, set_hint, alpha):
+    """Adds n strokes to an EMPTY frame, in order.
+
+    is_curve (n,) bool; quad_co (nq, 12) float32: XYZ of the 4 corners of each quad, in order;
+    curves: per curve stroke, in order, (co (m, 3) float32, pressure (m,), strength (m,),
+    vertex_color (m, 4)); per stroke (n,): material_index, fill_rgba (n, 4) scene-linear,
+    ordinal (drawing order in the file's frame), set_hint, alpha (0..255, quads only)."""
+    strokes = frame.strokes
+    n = len(is_curve)
     if n == 0:
         return
-    co = np.zeros((n, 4, 3), dtype=np.float32)
-    co[:, :, 0] = corners_m[:, :, 0]
-    co[:, :, 2] = -corners_m[:, :, 1]
-    rows = list(co.reshape(n, 12))
-    strokes = frame.strokes
-    first = len(strokes)
+    if len(strokes):
+        raise ValueError("fill_frame needs an empty frame")
+    if np.max(ordinal) >= MAX_ORDINAL:
+        raise ValueError(f"a frame holds more than {MAX_ORDINAL} strokes")
     new = strokes.new
+    for _ in range(n):
+        new()
+    pts = [s.points for s in strokes]
     uv = UV_FILL
-    for r in rows:  # the hot loop: one stroke per iteration, nothing else
-        p = new().points
-        p.add(4)
-        p.foreach_set('co', r)
-        p.foreach_set('uv_fill', uv)
-    _bulk_set(frame, first, n, material_index, fill_rgba, ordinal, set_hint, alpha)
-
-
-def _bulk_set(frame, first, n, material_index, fill_rgba, ordinal, set_hint, alpha):
-    strokes = frame.strokes
-    total = len(strokes)
-    # foreach_set works on the whole collection: read, patch our slice, write back.
-    def put(prop, values, dtype, width=1):
-        arr = np.empty(total * width, dtype=dtype)
-        strokes.foreach_get(prop, arr)
-        arr[first * width:(first + n) * width] = np.asarray(values, dtype=dtype).ravel()
-        strokes.foreach_set(prop, arr)
-    put('material_index', material_index, np.int32)
-    put('use_cyclic', np.ones(n, dtype=bool), bool)
-    put('vertex_color_fill', fill_rgba, np.float32, 4)
-    put('hardness', 0.5 + np.asarray(ordinal, dtype=np.float64) * ORDINAL_SCALE, np.float32)
-    put('line_width', np.asarray(set_hint, dtype=np.int32) + 1, np.int32)
-    asp = np.ones((n, 2), dtype=np.float32)
-    asp[:, 0] = 0.5 + np.asarray(alpha, dtype=np.float32) / 512.0
-    put('aspect', asp, np.float32, 2)
-
-
-def add_curve(frame, points_m: np.ndarray, widths_px: np.ndarray, material_index: int, line_rgb, alpha: int,
-              ordinal: int):
-    """Appends one GP line stroke. points_m: (n, 2) XY metres (image y down)."""
-    n = points_m.shape[0]
-    s = frame.strokes.new()
-    s.material_index = material_index
-    s.line_width = 1
-    s.uv_translation = (float(ordinal), 1.0)
-    s.use_cyclic = False
-    p = s.points
-    p.add(n)
-    co = np.zeros((n, 3), dtype=np.float32)
-    co[:, 0] = points_m[:, 0]
-    co[:, 2] = -points_m[:, 1]
-    p.foreach_set('co', co.ravel())
-    p.foreach_set('pressure', np.asarray(widths_px, dtype=np.float32))
-    p.foreach_set('strength', np.full(n, alpha / 255.0, dtype=np.float32))
-    vc = np.empty((n, 4), dtype=np.float32)
-    vc[:, 0:3] = line_rgb
-    vc[:, 3] = 1.0
-    p.foreach_set('vertex_color', vc.ravel())
+    if not is_curve.any():
+        for p in pts:
+            p.add(4)
+        for p, r in zip(pts, quad_co):  # the hot loop of import
+            p.foreach_set('co', r)
+            p.foreach_set('uv_fill', uv)
+    else:
+        qi = ci = 0
+        for p, c in zip(pts, is_curve.tolist()):
+            if c:
+                co, pressure, strength, vcol = curves[ci]
+                ci += 1
+                p.add(co.shape[0])
+                p.foreach_set('co', np.ascontiguousarray(co, dtype=np.float32).ravel())
+                p.foreach_set('pressure', np.ascontiguousarray(pressure, dtype=np.float32))
+                p.foreach_set('strength', np.ascontiguousarray(strength, dtype=np.float32))
+                p.foreach_set('vertex_color', np.ascontiguousarray(vcol, dtype=np.float32).ravel())
+            else:
+                p.add(4)
+                p.foreach_set('co', quad_co[qi])
+                p.foreach_set('uv_fill', uv)
+                qi += 1
+    # The hidden per-stroke data (module docstring), one foreach_set per property.
+    quad = ~np.asarray(is_curve, dtype=bool)
+    ordinal = np.asarray(ordinal, dtype=np.float64)
+    hardness = np.where(quad, 0.5 + ordinal * ORDINAL_SCALE, 1.0)
+    aspect = np.ones((n, 2), dtype=np.float32)
+    aspect[:, 0] = np.where(quad, 0.5 + np.asarray(alpha, dtype=np.float32) / 512.0, 1.0)
+    uvt = np.zeros((n, 2), dtype=np.float32)
+    uvt[~quad, 0] = ordinal[~quad]
+    uvt[~quad, 1] = 1.0
+    fill = np.where(quad[:, None], np.asarray(fill_rgba, dtype=np.float32), 0.0)
+    for name, values, dtype in (("material_index", material_index, np.int32), ("use_cyclic", quad, bool),
+                                ("vertex_color_fill", fill, np.float32), ("hardness", hardness, np.float32),
+                                ("line_width", np.where(quad, np.asarray(set_hint) + 1, 1), np.int32),
+                                ("aspect", aspect, np.float32), ("uv_translation", uvt, np.float32)):
+        strokes.foreach_set(name, np.ascontiguousarray(values, dtype=dtype).ravel())
 
 
 # ---------------------------------------------------------------- reading strokes back
 
 class FrameData:
-    """One GP frame read back in bulk. Per stroke: material index, point count, hardness,
-    line width, aspect x, fill colour, uv translation; points concatenated."""
+    """One GP frame read back in bulk: per stroke material index, point count, fill colour, line
+    width, the decoded hidden data (is_imported_quad, ordinal or -1, set_hint, alpha) and the
+    corners (n, 12) of 4-point strokes. Other strokes' points are read one by one on request
+    (hand-drawn strokes: few)."""
 
     def __init__(self, frame):
         strokes = frame.strokes
@@ -216,38 +224,41 @@ class FrameData:
             strokes.foreach_get('aspect', aspect)
             strokes.foreach_get('vertex_color_fill', self.fill)
             strokes.foreach_get('uv_translation', uvt)
-        self.aspect_x = aspect[0::2]
         self.fill = self.fill.reshape(n, 4)
-        self.uv_translation = uvt.reshape(n, 2)
-        self._strokes = strokes
-        self._list = None
-        self.npoints = np.fromiter((len(s.points) for s in strokes), dtype=np.int64, count=n)
-        self.offsets = np.zeros(n + 1, dtype=np.int64)
-        np.cumsum(self.npoints, out=self.offsets[1:])
-        total = int(self.offsets[-1])
-        co = np.empty(total * 3, dtype=np.float32)
-        off = self.offsets
-        for i, s in enumerate(strokes):  # the hot loop of export
-            a, b = off[i], off[i + 1]
-            if b > a:
-                s.points.foreach_get('co', co[3 * a:3 * b])
-        co = co.reshape(total, 3)
-        # Back to image orientation, metres: x right, y down.
-        self.xy = np.stack([co[:, 0], -co[:, 2]], axis=1).astype(np.float64)
+        # The hidden per-stroke data (module docstring) decoded.
+        self.is_imported_quad = self.hardness < 1.0
+        ax = aspect[0::2].astype(np.float64)
+        self.alpha = np.where(ax >= 0.999, 255, np.clip(np.floor((ax - 0.5) * 512 + 0.5), 0, 255)).astype(np.int64)
+        self.set_hint = self.line_width.astype(np.int64) - 1
+        uvt = uvt.reshape(n, 2)
+        quad_ord = np.floor((self.hardness.astype(np.float64) - 0.5) * 2.0 ** 24 + 0.5)
+        self.ordinal = np.where(self.is_imported_quad, quad_ord,
+                                np.where(uvt[:, 1] == 1.0, uvt[:, 0], -1)).astype(np.int64)
+        self._pts = pts = [s.points for s in strokes]
+        self.npoints = np.fromiter(map(len, pts), dtype=np.int64, count=n)
+        self.co4 = np.zeros((n, 12), dtype=np.float32)
+        four = self.npoints == 4
+        if four.all():
+            for p, r in zip(pts, self.co4):  # the hot loop of export
+                p.foreach_get('co', r)
+        else:
+            co4 = self.co4
+            for i in np.flatnonzero(four).tolist():
+                pts[i].foreach_get('co', co4[i])
 
-    def point_attrs(self, i: int):
-        """(pressure, strength, vertex_color (n, 4)) of stroke i (curves only: slow path)."""
-        if self._list is None:
-            self._list = list(self._strokes)  # indexing a GP stroke collection is O(i)
-        p = self._list[i].points
-        n = len(p)
-        pr = np.empty(n, dtype=np.float32)
-        st = np.empty(n, dtype=np.float32)
-        vc = np.empty(4 * n, dtype=np.float32)
+    def points(self, i: int):
+        """(co (m, 3), pressure, strength, vertex_color (m, 4)) of stroke i."""
+        p = self._pts[i]
+        m = len(p)
+        co = np.empty(3 * m, dtype=np.float32)
+        pr = np.empty(m, dtype=np.float32)
+        st = np.empty(m, dtype=np.float32)
+        vc = np.empty(4 * m, dtype=np.float32)
+        p.foreach_get('co', co)
         p.foreach_get('pressure', pr)
         p.foreach_get('strength', st)
         p.foreach_get('vertex_color', vc)
-        return pr, st, vc.reshape(n, 4)
+        return co.reshape(m, 3), pr, st, vc.reshape(m, 4)
 
 
 def read_frame(frame) -> FrameData:

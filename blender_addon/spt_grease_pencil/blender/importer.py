@@ -8,14 +8,16 @@ viewport order is then exactly the file's.
 """
 
 import os
+import time
 
 import numpy as np
 
 from ..io import colors, geometry_np, stream_json
 from ..io.model import AFFINE, CURVE, STAMP, NeedsPack, SptError
 from ..io.reader import read_file
+from ..io.strokes_np import A, B, CURVE_ID, G, KIND, R, SET, TMPL
+from ..spt_tool import pack_stored, temp_path
 from . import gp
-from .spt_tool import SptToolError, pack_stored, temp_path
 
 LINEAR = np.array(colors.LINEAR, dtype=np.float32)
 
@@ -25,13 +27,13 @@ def load_stored(path: str, spt_path: str):
     if not os.path.isfile(path):
         raise SptError(f"{path}: no such file")
     try:
-        return read_file(path)
+        return read_file(path, columnar=True)
     except NeedsPack:
         pass
     tmp = temp_path()
     try:
         pack_stored(spt_path, path, tmp)
-        f = read_file(tmp)
+        f = read_file(tmp, columnar=True)
         f.path = path
         return f
     finally:
@@ -73,17 +75,29 @@ def _scene_setup(context, info, count):
     world.color = tuple(float(LINEAR[c]) for c in h.background)
 
 
+def _layer_keys(rows, layering, nsets):
+    """Per stroke, the index of its layer key in the list ('set', i) * nsets + ['shapes', 'curves']
+    (SETS) or 0 (SINGLE)."""
+    if layering == 'SINGLE':
+        return np.zeros(rows.shape[0], dtype=np.int64)
+    kind = rows[:, KIND]
+    return np.where(kind == STAMP, rows[:, SET], np.where(kind == AFFINE, nsets, nsets + 1)).astype(np.int64)
+
+
 def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', progress=None):
-    """Returns (object, summary dict). Raises SptError / SptToolError with a readable message."""
+    """Returns (object, summary dict). Raises SptError / SptToolError with a readable message.
+    summary["seconds"] splits the time: read (spt pack --stored + Python reader + live lists),
+    build (Grease Pencil data)."""
+    t0 = time.perf_counter()
     f = load_stored(path, spt_path)
     info = f.info
     h = info.header
     if not f.frames:
         raise SptError(f"{path}: the file holds no frames")
-    lists = list(f.live_lists())
+    tables = list(f.live_lists())  # StrokeTables; inter frames share nothing mutable
+    t1 = time.perf_counter()
     name = os.path.splitext(os.path.basename(path))[0] or "strokes"
     obj = gp.new_object(context, name)
-    gpd = obj.data
 
     tmat = []
     for ti, t in enumerate(info.templates):
@@ -94,106 +108,83 @@ def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', 
     cmat = gp.curve_material(f"{name} curve")
     cmat["spt_curve"] = 1
     cmat_index = gp.add_material(obj, cmat)
+    mat_of_tmpl = np.array(tmat + [cmat_index], dtype=np.int32)
 
-    kinds_used = set()
-    sets_used = set()
-    for lst in lists:
-        for s in lst:
-            kinds_used.add(s[0])
-            if s[0] == STAMP:
-                sets_used.add(s[1])
-    # Layers bottom to top. Key: ('set', i) / 'shapes' / 'curves', or 'all'.
-    layer_of = {}
+    # Layers bottom to top: the stroke sets used (coarse to fine), shapes, curves; or one layer.
+    nsets = len(h.sets)
+    used = np.zeros(nsets + 2, dtype=bool)
+    for t in tables:
+        used[np.unique(_layer_keys(t.rows, 'SETS', nsets))] = True
     if layering == 'SINGLE':
-        layer_of['all'] = gp.new_layer(obj, "strokes")
+        layer_of = {0: gp.new_layer(obj, "strokes")}
     else:
-        for si, (sw, sh) in enumerate(h.sets):
-            if si in sets_used:
-                layer_of[('set', si)] = gp.new_layer(obj, f"set {si} ({sw}x{sh})")
-        if AFFINE in kinds_used:
-            layer_of['shapes'] = gp.new_layer(obj, "shapes")
-        if CURVE in kinds_used or not layer_of:
-            layer_of['curves'] = gp.new_layer(obj, "curves")
+        if not used.any():
+            used[nsets + 1] = True
+        layer_of = {}
+        for k in np.flatnonzero(used).tolist():
+            label = f"set {k} ({h.sets[k][0]}x{h.sets[k][1]})" if k < nsets else ("shapes" if k == nsets else "curves")
+            layer_of[k] = gp.new_layer(obj, label)
 
     start = context.scene.frame_start
-    sets_arr, orients = h.sets, h.orientations
-    tmat_arr = np.array(tmat + [0], dtype=np.int32)
     total_strokes = 0
-    for fi, lst in enumerate(lists):
-        number = start + fi
-        frames = {k: gp.new_frame(layer, number) for k, layer in layer_of.items()}
-        groups = {}
-        for i, s in enumerate(lst):
-            k = s[0]
-            key = 'all' if layering == 'SINGLE' else (('set', s[1]) if k == STAMP else
-                                                      ('shapes' if k == AFFINE else 'curves'))
-            groups.setdefault((key, k), []).append(i)
-        # Quads first per layer in drawing order: within a layer, kinds do not interleave
-        # except in SINGLE mode, where we build the layer stroke by stroke runs.
-        for key, frame in frames.items():
-            idx = sorted(i for (gk, _k), ids in groups.items() if gk == key for i in ids)
-            _fill_frame(frame, lst, idx, sets_arr, orients, tmat_arr, cmat_index)
-        total_strokes += len(lst)
+    for fi, table in enumerate(tables):
+        _fill_frame(table, start + fi, layer_of, layering, h, mat_of_tmpl, cmat_index)
+        total_strokes += len(table)
         if progress:
-            progress(fi + 1, len(lists))
+            progress(fi + 1, len(tables))
 
+    gpd = obj.data
     gpd["spt_stream"] = stream_json.to_json(info)
     gpd["spt_frame_start"] = start
-    gpd["spt_frame_count"] = len(lists)
+    gpd["spt_frame_count"] = len(tables)
     gpd["spt_source"] = path
-    _scene_setup(context, info, len(lists))
+    # Export tries these block sizes first to find the motion fields again (state_np.find_motion).
+    gpd["spt_motion_blocks"] = sorted({fr.motion.block_size for fr in f.frames if fr.motion is not None})
+    _scene_setup(context, info, len(tables))
     cam = gp.new_camera(context, f"{name} camera", h.width, h.height)
     context.scene.camera = cam
-    summary = {"frames": len(lists), "strokes": total_strokes, "layers": len(layer_of),
-               "templates": len(info.templates), "complete": f.complete, "problem": f.problem}
+    summary = {"frames": len(tables), "strokes": total_strokes, "layers": len(layer_of),
+               "templates": len(info.templates), "complete": f.complete, "problem": f.problem,
+               "seconds": {"read": t1 - t0, "build": time.perf_counter() - t1}}
     return obj, summary
 
 
-def _fill_frame(frame, lst, idx, sets, orients, tmat_arr, cmat_index):
-    """Adds strokes lst[i] for i in idx (increasing) to one GP frame, in runs of one kind so
-    quads go in bulk."""
-    run = []
-    run_kind = None
-    for i in idx:
-        k = 1 if lst[i][0] != CURVE else 2  # 1 = quad (stamp or affine), 2 = curve
-        if run and k != run_kind:
-            _flush(frame, lst, run, run_kind, sets, orients, tmat_arr, cmat_index)
-            run = []
-        run_kind = k
-        run.append(i)
-    if run:
-        _flush(frame, lst, run, run_kind, sets, orients, tmat_arr, cmat_index)
+def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index):
+    """One file frame: a GP frame on every layer (an empty one where the layer has nothing, so
+    the previous frame does not stay visible), each with its strokes in drawing order."""
+    rows = table.rows
+    n = rows.shape[0]
+    is_curve = rows[:, KIND] == CURVE
+    corners = np.zeros((n, 4, 3), dtype=np.float32)
+    quad = ~is_curve
+    if quad.any():
+        c = geometry_np.table_corners(rows[quad], h.sets, h.orientations) / 1000.0  # metres
+        corners[quad, :, 0] = c[:, :, 0]
+        corners[quad, :, 2] = -c[:, :, 1]
+    fill = np.ones((n, 4), dtype=np.float32)
+    fill[:, 0:3] = LINEAR[rows[:, R:B + 1]]
+    material = np.where(is_curve, cmat_index, mat_of_tmpl[np.where(is_curve, 0, rows[:, TMPL])])
+    keys = _layer_keys(rows, layering, len(h.sets))
+    for k, layer in layer_of.items():
+        frame = gp.new_frame(layer, number)
+        idx = np.flatnonzero(keys == k)
+        if idx.size == 0:
+            continue
+        sub_curve = is_curve[idx]
+        curves = [_curve_points(table, i) for i in idx[sub_curve].tolist()]
+        qidx = idx[~sub_curve]
+        gp.fill_frame(frame, sub_curve, corners[qidx].reshape(-1, 12), curves, material[idx], fill[idx],
+                      idx, rows[idx, SET], rows[idx, A])
 
 
-def _flush(frame, lst, run, run_kind, sets, orients, tmat_arr, cmat_index):
-    if run_kind == 2:
-        for i in run:
-            s = lst[i]
-            pts = np.array(s[5], dtype=np.float64).reshape(-1, 3) / 16.0
-            gp.add_curve(frame, pts[:, :2] / 1000.0, pts[:, 2], cmat_index,
-                         LINEAR[[s[1], s[2], s[3]]], s[4], i)
-        return
-    n = len(run)
-    corners = np.empty((n, 4, 2), dtype=np.float64)
-    tmpl = np.empty(n, dtype=np.int64)
-    rgba = np.empty((n, 4), dtype=np.int64)
-    hint = np.zeros(n, dtype=np.int64)
-    is_stamp = np.array([lst[i][0] == STAMP for i in run], dtype=bool)
-    if is_stamp.any():
-        st = np.array([lst[i] for i, m in zip(run, is_stamp) if m], dtype=np.int64)
-        corners[is_stamp] = geometry_np.stamps_to_corners(st, sets, orients)
-        tmpl[is_stamp] = st[:, 2]
-        rgba[is_stamp] = st[:, 6:10]
-        hint[is_stamp] = st[:, 1]
-    if not is_stamp.all():
-        af = np.array([lst[i] for i, m in zip(run, is_stamp) if not m], dtype=np.int64)
-        corners[~is_stamp] = geometry_np.affines_to_corners(af)
-        tmpl[~is_stamp] = af[:, 1]
-        rgba[~is_stamp] = af[:, 8:12]
-    fill = np.empty((n, 4), dtype=np.float32)
-    fill[:, 0:3] = LINEAR[rgba[:, 0:3]]
-    fill[:, 3] = 1.0
-    ordinal = np.array(run, dtype=np.int64)
-    if ordinal.size and ordinal.max() >= gp.backend.MAX_ORDINAL:
-        raise SptError(f"a frame holds more than {gp.backend.MAX_ORDINAL} strokes")
-    gp.add_quads(frame, corners / 1000.0, tmat_arr[tmpl], fill, ordinal, hint, rgba[:, 3])
+def _curve_points(table, i):
+    """GP points of curve stroke i: (co metres, pressure = width px, strength, vertex colour)."""
+    r = table.rows[i]
+    pts = table.curves[r[CURVE_ID]].astype(np.float64) / 16.0
+    m = pts.shape[0]
+    co = np.zeros((m, 3), dtype=np.float32)
+    co[:, 0] = pts[:, 0] / 1000.0
+    co[:, 2] = -pts[:, 1] / 1000.0
+    vc = np.ones((m, 4), dtype=np.float32)
+    vc[:, 0:3] = LINEAR[[r[R], r[G], r[B]]]
+    return co, pts[:, 2].astype(np.float32), np.full(m, r[A] / 255.0, dtype=np.float32), vc

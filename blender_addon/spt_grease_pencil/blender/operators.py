@@ -8,7 +8,7 @@ from bpy.props import BoolProperty, EnumProperty, StringProperty
 from bpy_extras.io_utils import ExportHelper, ImportHelper
 
 from ..io.model import SptError
-from . import spt_tool
+from .. import spt_tool
 from .preferences import spt_path
 
 LAYERING = [
@@ -109,6 +109,13 @@ def paint_source(scene, settings):
     return base + ext, f"{scene.frame_start}-{scene.frame_end}"
 
 
+def scene_fps_text(scene) -> str:
+    """The scene's frame rate as spt's --fps value: 24, or a fraction such as 30000/1001."""
+    from fractions import Fraction
+    fps = Fraction(scene.render.fps / scene.render.fps_base).limit_denominator(1001)
+    return str(fps.numerator) if fps.denominator == 1 else f"{fps.numerator}/{fps.denominator}"
+
+
 class SPT_OT_paint(bpy.types.Operator):
     """Paint the rendered frames (or a chosen file or video) into strokes with spt, then import them"""
     bl_idname = "spt.paint_strokes"
@@ -132,6 +139,8 @@ class SPT_OT_paint(bpy.types.Operator):
                 "templates": bpy.path.abspath(st.templates) if st.templates else "",
                 "key_interval": st.key_interval, "roi": bpy.path.abspath(st.roi) if st.roi else "",
                 "seed": st.seed, "frames": frames}
+        if st.source == 'RENDER' or "#" in source or "%" in source:
+            opts["fps"] = scene_fps_text(scene)  # image sequences carry no rate; a video keeps its own
         spt_tool.version(spt_path(context))  # a clear message when missing or too old
         return spt_tool.PaintJob(spt_path(context), source, out, opts)
 

@@ -3,7 +3,7 @@
 import bpy
 from bpy.props import StringProperty
 
-from . import spt_tool
+from .. import spt_tool
 
 PACKAGE = __package__.split(".")[0]
 

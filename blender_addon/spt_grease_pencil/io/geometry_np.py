@@ -7,6 +7,7 @@ import numpy as np
 
 from .geometry import CORNERS_UV, STAMP_TOLERANCE_PX
 from .model import AFFINE, MAX_MATRIX, MAX_POS, STAMP
+from .strokes_np import A, KIND, MA, MB, MC, MD, NCOL, ORIENT, R, SET, TMPL, X, Y, StrokeTable
 
 _CUV = np.array(CORNERS_UV, dtype=np.float64)  # (4, 2)
 
@@ -49,51 +50,86 @@ def _q4(v):
     return np.floor(v * 16.0 + 0.5).astype(np.int64)
 
 
-def quads_to_strokes(corners, templates, rgba, sets, orients, set_hint=None):
-    """Vectorised geometry.quad_to_stroke. corners (N, 4, 2) pixels, templates (N,), rgba (N, 4)
-    ints, set_hint (N,) or None. Returns a list of N stroke tuples (None where invalid)."""
+def table_corners(rows, sets, orients):
+    """(N, 4, 2) pixel corners of the stamp and affine rows of a StrokeTable (curve rows: 0)."""
+    r = np.asarray(rows)
+    table = stamp_axes_table(sets, orients)
+    is_stamp = r[:, KIND] == STAMP
+    si = np.where(is_stamp, r[:, SET], 0)
+    oi = np.where(is_stamp, r[:, ORIENT], 0)
+    axes = table[si, oi]  # (N, 2, 2)
+    m = r[:, MA:MD + 1].astype(np.float64) / 16.0  # a b c d
+    ua = np.where(is_stamp[:, None], axes[:, 0], np.stack([m[:, 0], m[:, 2]], axis=-1))
+    va = np.where(is_stamp[:, None], axes[:, 1], np.stack([m[:, 1], m[:, 3]], axis=-1))
+    centre = r[:, X:Y + 1].astype(np.float64) / 16.0
+    return corners_from_frames(centre, ua, va)
+
+
+def match_stamps(ua, va, sets, orients, set_hint=None):
+    """Per quad, set * O + orient of the stamp whose axes are ua, va (N, 2) within the tolerance,
+    or -1: the hinted set first when it matches, else the first match in (set, orient) order
+    (geometry.match_stamp). The hinted set is tried alone first (N x O work); only the quads it
+    does not explain (edited or affine strokes: few) are compared with every (set, orient)."""
+    table = stamp_axes_table(sets, orients)  # (S, O, 2, 2)
+    S, O = table.shape[0], table.shape[1]
+    flat = table.reshape(S, O, 4)
+    mine = np.concatenate([ua, va], axis=1)  # (N, 4)
+    n = mine.shape[0]
+    first = np.full(n, -1, dtype=np.int64)
+    todo = np.arange(n)
+    if set_hint is not None:
+        hint = np.asarray(set_hint, dtype=np.int64).reshape(-1)
+        valid = (hint >= 0) & (hint < S)
+        hint_c = np.clip(hint, 0, S - 1)
+        ok = (np.abs(mine[:, None, :] - flat[hint_c]) <= STAMP_TOLERANCE_PX).all(axis=2)  # (N, O)
+        hit = valid & ok.any(axis=1)
+        first[hit] = hint_c[hit] * O + ok[hit].argmax(axis=1)
+        todo = np.flatnonzero(~hit)
+    step = 4096  # bounds the temporary (step x S*O x 4) array
+    flat2 = flat.reshape(S * O, 4)
+    for i in range(0, todo.shape[0], step):
+        sel = todo[i:i + step]
+        ok = (np.abs(mine[sel, None, :] - flat2[None, :, :]) <= STAMP_TOLERANCE_PX).all(axis=2)
+        first[sel] = np.where(ok.any(axis=1), ok.argmax(axis=1), -1)
+    return first
+
+
+def quads_to_rows(corners, templates, rgba, sets, orients, set_hint=None):
+    """Vectorised geometry.quad_to_stroke into StrokeTable rows. corners (N, 4, 2) pixels,
+    templates (N,), rgba (N, 4) ints, set_hint (N,) or None. Returns (rows (N, NCOL) int32,
+    valid (N,) bool); invalid rows (degenerate or out of range) are to be left out."""
     q = np.asarray(corners, dtype=np.float64).reshape(-1, 4, 2)
     n = q.shape[0]
+    rows = np.zeros((n, NCOL), dtype=np.int32)
     if n == 0:
-        return []
+        return rows, np.zeros(0, dtype=bool)
     centre = q.mean(axis=1)
     ua = ((q[:, 1] - q[:, 0]) + (q[:, 2] - q[:, 3])) / 4.0
     va = ((q[:, 3] - q[:, 0]) + (q[:, 2] - q[:, 1])) / 4.0
-    table = stamp_axes_table(sets, orients)  # (S, O, 2, 2)
-    S, O = table.shape[0], table.shape[1]
-    flat = table.reshape(S * O, 4)
-    mine = np.concatenate([ua, va], axis=1)  # (N, 4)
-    ok = np.empty((n, S * O), dtype=bool)
-    step = 4096  # bounds the temporary (step x S*O x 4) array
-    for i in range(0, n, step):
-        diff = np.abs(mine[i:i + step, None, :] - flat[None, :, :])
-        ok[i:i + step] = (diff <= STAMP_TOLERANCE_PX).all(axis=2)
-    # First match in (set, orient) order, but the hinted set first when it matches.
-    first = np.where(ok.any(axis=1), ok.argmax(axis=1), -1)
-    if set_hint is not None:
-        hint = np.asarray(set_hint, dtype=np.int64)
-        okr = ok.reshape(n, S, O)
-        valid = (hint >= 0) & (hint < S)
-        hint_c = np.clip(hint, 0, S - 1)
-        hrow = okr[np.arange(n), hint_c]  # (n, O)
-        use = valid & hrow.any(axis=1)
-        first = np.where(use, hint_c * O + hrow.argmax(axis=1), first)
+    first = match_stamps(ua, va, sets, orients, set_hint)
+    O = len(orients)
     x, y = _q4(centre[:, 0]), _q4(centre[:, 1])
     a, c, b, d = _q4(ua[:, 0]), _q4(ua[:, 1]), _q4(va[:, 0]), _q4(va[:, 1])
     pos_ok = (np.abs(x) <= MAX_POS) & (np.abs(y) <= MAX_POS)
     aff_ok = (np.maximum.reduce([np.abs(a), np.abs(b), np.abs(c), np.abs(d)]) <= MAX_MATRIX) & (a * d - b * c != 0)
-    tmpl = np.asarray(templates, dtype=np.int64).tolist()
-    col = [tuple(r) for r in np.asarray(rgba, dtype=np.int64).tolist()]
-    out = []
-    for i, (fi, xi, yi, ai, bi, ci, di, pk, ak) in enumerate(zip(
-            first.tolist(), x.tolist(), y.tolist(), a.tolist(), b.tolist(), c.tolist(), d.tolist(),
-            pos_ok.tolist(), aff_ok.tolist())):
-        if not pk:
-            out.append(None)
-        elif fi >= 0:
-            out.append((STAMP, fi // O, tmpl[i], fi % O, xi, yi) + col[i])
-        elif ak:
-            out.append((AFFINE, tmpl[i], xi, yi, ai, bi, ci, di) + col[i])
-        else:
-            out.append(None)
-    return out
+    is_stamp = first >= 0
+    valid = pos_ok & (is_stamp | aff_ok)
+    x, y = np.where(valid, x, 0), np.where(valid, y, 0)
+    rows[:, KIND] = np.where(is_stamp, STAMP, AFFINE)
+    rows[:, SET] = np.where(is_stamp, first // O, 0)
+    rows[:, ORIENT] = np.where(is_stamp, first % O, 0)
+    rows[:, TMPL] = np.asarray(templates, dtype=np.int64)
+    rows[:, X] = x
+    rows[:, Y] = y
+    aff = (~is_stamp) & valid
+    for col, v in ((MA, a), (MB, b), (MC, c), (MD, d)):
+        rows[:, col] = np.where(aff, v, 0)
+    rows[:, R:A + 1] = np.asarray(rgba, dtype=np.int64).reshape(n, 4)
+    return rows, valid
+
+
+def quads_to_strokes(corners, templates, rgba, sets, orients, set_hint=None):
+    """quads_to_rows as model tuples (None where invalid), for tests against geometry.py."""
+    rows, valid = quads_to_rows(corners, templates, rgba, sets, orients, set_hint)
+    tup = StrokeTable(rows).to_tuples()
+    return [t if v else None for t, v in zip(tup, valid.tolist())]

@@ -22,15 +22,21 @@ _FRAM = struct.Struct("<IBBH")
 class SptFile:
     """Everything read from a file: stream info, frames as stored, completeness."""
 
-    def __init__(self, path: str, info: StreamInfo, frames: List[Frame], complete: bool, problem: str):
+    def __init__(self, path: str, info: StreamInfo, frames: List[Frame], complete: bool, problem: str,
+                 curves=None):
         self.path = path
+        self.curves = curves        # columnar mode: the curve pool of the StrokeTables
         self.info = info
         self.frames = frames
         self.complete = complete    # False when IEND was missing (recovered frames only)
         self.problem = problem      # why the file is incomplete, "" otherwise
 
     def live_lists(self, limits: Limits = None) -> Iterator[list]:
-        """Yields the live stroke list after each frame (section 5)."""
+        """Yields the live stroke list after each frame (section 5): tuple lists, or StrokeTables
+        when the file was read with columnar=True."""
+        if self.curves is not None:
+            from . import state_np
+            return state_np.apply_frames(self.info.header, self.frames, limits or Limits(), self.path, self.curves)
         return apply_frames(self.info.header, self.frames, limits or Limits(), self.path)
 
 
@@ -190,7 +196,9 @@ def _parse_rois(p, path, off):
     return [Roi(*r) for r in struct.iter_unpack("<IIIIII", p[4:])]
 
 
-def _parse_frame(p, path, off, info, limits) -> Frame:
+def _parse_frame(p, path, off, info, limits, curves=None) -> Frame:
+    """One FRAM chunk. With a curve pool (columnar mode) the strokes become a StrokeTable and
+    removals / motion vectors numpy arrays (strokes_np.py); otherwise tuples and lists."""
     if len(p) < _FRAM.size:
         raise _err(path, off, "FRAM payload too short")
     index, ftype, coding, res = _FRAM.unpack_from(p, 0)
@@ -213,7 +221,11 @@ def _parse_frame(p, path, off, info, limits) -> Frame:
         (nrem,) = _U32.unpack_from(body, 0)
         if 4 + 4 * nrem > n:
             raise _err(path, base, f"frame {index}: {nrem} removed indices run past the body")
-        fr.removed = list(struct.unpack_from(f"<{nrem}I", body, 4))
+        if curves is not None:
+            import numpy as np
+            fr.removed = np.frombuffer(body, dtype="<u4", count=nrem, offset=4).astype(np.int64)
+        else:
+            fr.removed = list(struct.unpack_from(f"<{nrem}I", body, 4))
         pos = 4 + 4 * nrem
         if pos >= n:
             raise _err(path, base + pos, f"frame {index}: body ends before motion_present")
@@ -229,8 +241,13 @@ def _parse_frame(p, path, off, info, limits) -> Frame:
             pos += 6
             if pos + 4 * cols * rows > n:
                 raise _err(path, base + pos, f"frame {index}: motion vectors run past the body")
-            flat = struct.unpack_from(f"<{2 * cols * rows}h", body, pos)
-            fr.motion = Motion(bs, cols, rows, list(zip(flat[0::2], flat[1::2])))
+            if curves is not None:
+                import numpy as np
+                vec = np.frombuffer(body, dtype="<i2", count=2 * cols * rows, offset=pos).reshape(-1, 2)
+                fr.motion = Motion(bs, cols, rows, vec.astype(np.int32))
+            else:
+                flat = struct.unpack_from(f"<{2 * cols * rows}h", body, pos)
+                fr.motion = Motion(bs, cols, rows, list(zip(flat[0::2], flat[1::2])))
             pos += 4 * cols * rows
         elif present != 0:
             raise _err(path, base + pos - 1, f"frame {index}: motion_present is {present}")
@@ -240,14 +257,23 @@ def _parse_frame(p, path, off, info, limits) -> Frame:
     pos += 4
     if count > limits.max_strokes_per_frame or count > (n - pos):  # each record is >= 1 byte
         raise _err(path, base + pos - 4, f"frame {index}: stroke count {count} is impossible for a {n}-byte body")
-    fr.added, pos = parse_strokes(body, pos, count, path, base, info, limits)
+    if curves is not None:
+        from . import strokes_np
+        fr.added, pos = strokes_np.parse_records(body, pos, count, path, base, len(info.templates),
+                                                 len(info.header.sets), len(info.header.orientations),
+                                                 limits.max_curve_points, curves)
+    else:
+        fr.added, pos = parse_strokes(body, pos, count, path, base, info, limits)
     if pos != n:
         raise _err(path, base + pos, f"frame {index}: {n - pos} bytes after the last stroke record")
     return fr
 
 
-def read_bytes(data, path: str = "<memory>", limits: Limits = None) -> SptFile:
+def read_bytes(data, path: str = "<memory>", limits: Limits = None, columnar: bool = False) -> SptFile:
+    """Reads a stored-mode file. columnar=True (needs numpy) gives StrokeTables instead of tuples:
+    the fast path for millions of strokes."""
     limits = limits or Limits()
+    curves = [] if columnar else None
     if len(data) < 8 or bytes(data[:8]) != chunks.SIGNATURE:
         raise SptError(f"{path}: byte 0: not a .spt file (bad signature)")
     info = StreamInfo()
@@ -279,7 +305,7 @@ def read_bytes(data, path: str = "<memory>", limits: Limits = None) -> SptFile:
                 raise _err(path, off, "too many templates")
             info.templates.append(_parse_tmpl(p, path, off, limits))
         elif ctype == b"FRAM":
-            fr = _parse_frame(p, path, off, info, limits)
+            fr = _parse_frame(p, path, off, info, limits, curves)
             if fr.index != len(frames):
                 raise _err(path, off, f"frame index {fr.index}, expected {len(frames)}")
             if fr.index == 0 and fr.type != KEY:
@@ -308,17 +334,17 @@ def read_bytes(data, path: str = "<memory>", limits: Limits = None) -> SptFile:
         raise SptError(f"{path}: no HEAD chunk ({problem or 'empty file'})")
     if not ended:
         problem = problem or "file ends without IEND"
-    return SptFile(path, info, frames, ended, "" if ended else problem)
+    return SptFile(path, info, frames, ended, "" if ended else problem, curves)
 
 
-def read_file(path: str, limits: Limits = None) -> SptFile:
+def read_file(path: str, limits: Limits = None, columnar: bool = False) -> SptFile:
     limits = limits or Limits()
     try:
         with open(path, "rb") as f:
             data = f.read()
     except OSError as e:
         raise SptError(f"{path}: cannot read: {e.strerror or e}") from None
-    return read_bytes(data, path, limits)
+    return read_bytes(data, path, limits, columnar)
 
 
 def is_stored(path: str) -> bool:

@@ -61,19 +61,32 @@ def strokes_bytes(strokes: Iterable) -> bytes:
     return b"".join(out)
 
 
+def _added_bytes(added) -> bytes:
+    # A StrokeTable (strokes_np.py, columnar mode) packs itself; tuples go through the reference.
+    return added.record_bytes() if hasattr(added, "record_bytes") else strokes_bytes(added)
+
+
 def frame_payload(fr: Frame) -> bytes:
     head = struct.pack("<IBBH", fr.index, fr.type, 0, 0)
     if fr.type == KEY:
-        return head + struct.pack("<I", len(fr.added)) + strokes_bytes(fr.added)
-    body = [head, struct.pack("<I", len(fr.removed)), struct.pack(f"<{len(fr.removed)}I", *fr.removed)]
+        return head + struct.pack("<I", len(fr.added)) + _added_bytes(fr.added)
+    nrem = len(fr.removed)
+    if hasattr(fr.removed, "astype"):  # numpy array
+        rem = fr.removed.astype("<u4").tobytes()
+    else:
+        rem = struct.pack(f"<{nrem}I", *fr.removed)
+    body = [head, struct.pack("<I", nrem), rem]
     if fr.motion is None:
         body.append(b"\x00")
     else:
         m = fr.motion
         body.append(struct.pack("<BHHH", 1, m.block_size, m.cols, m.rows))
-        body.append(struct.pack(f"<{2 * len(m.vectors)}h", *[c for v in m.vectors for c in v]))
+        if hasattr(m.vectors, "astype"):
+            body.append(m.vectors.astype("<i2").tobytes())
+        else:
+            body.append(struct.pack(f"<{2 * len(m.vectors)}h", *[c for v in m.vectors for c in v]))
     body.append(struct.pack("<I", len(fr.added)))
-    body.append(strokes_bytes(fr.added))
+    body.append(_added_bytes(fr.added))
     return b"".join(body)
 
 

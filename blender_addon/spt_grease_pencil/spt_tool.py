@@ -1,6 +1,7 @@
 """Running the `spt` executable: finding it, checking its version, pack and paint.
 
-No bpy here: operators call these and turn SptToolError into a Blender error report."""
+No bpy here (importable and testable without Blender, like io/): operators call these and
+turn SptToolError into a Blender error report."""
 
 import json
 import os
@@ -19,7 +20,7 @@ class SptToolError(Exception):
 
 def default_path() -> str:
     """`spt` next to the add-on (a bundled build), else the one on PATH, else ''."""
-    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    here = os.path.dirname(os.path.abspath(__file__))
     for cand in (os.path.join(here, "bin", "spt"), os.path.join(here, "spt")):
         if os.path.isfile(cand) and os.access(cand, os.X_OK):
             return cand
@@ -108,21 +109,31 @@ def paint_args(opts: dict) -> list:
         a += ["--keyframe-interval", str(opts["key_interval"])]
     if opts.get("roi"):
         a += ["--roi-file", opts["roi"]]
+    if opts.get("frames"):
+        a += ["--frames", opts["frames"]]
+    if opts.get("fps"):
+        a += ["--fps", opts["fps"]]
     a += ["--seed", str(opts.get("seed", 1))]
     return a
 
 
 class PaintJob:
-    """`spt paint INPUT -o OUT ... --progress json` in the background.
+    """`spt paint INPUT -o TMP ... --progress json` in the background.
 
+    spt writes to a private file beside OUTPUT (TMP), renamed to OUTPUT only when the paint
+    succeeds: a cancelled or failed paint leaves no output and never touches an existing OUTPUT.
     A reader thread parses the JSON lines of stdout into `percent`, `done`, `total`; the caller
-    polls (a modal timer) or calls wait(). cancel() terminates the process and removes the output,
-    so a cancelled paint leaves no half-written file."""
+    polls (a modal timer) or calls wait(). cancel() asks spt to stop (SIGTERM: a video paint
+    then finishes its current frame and writes what it has), kills it when it does not end
+    within `grace` seconds, and removes TMP and spt's own TMP.partial."""
 
-    def __init__(self, spt_path: str, source: str, output: str, opts: dict):
+    def __init__(self, spt_path: str, source: str, output: str, opts: dict, grace: float = 3.0):
         self.exe = resolve(spt_path)
         self.output = output
-        self.cmd = [self.exe, "paint", source, "-o", output] + paint_args(opts) + ["--progress", "json"]
+        folder, base = os.path.split(os.path.abspath(output))
+        self.work = os.path.join(folder, f".{base}.painting-{os.getpid()}-{id(self):x}.spt")
+        self.grace = grace
+        self.cmd = [self.exe, "paint", source, "-o", self.work] + paint_args(opts) + ["--progress", "json"]
         self.percent = 0.0
         self.done = 0.0
         self.total = 0.0
@@ -170,33 +181,47 @@ class PaintJob:
         return self.proc.poll()
 
     def cancel(self):
+        """Stops spt and removes everything it wrote; returns when the process has ended."""
         self.cancelled = True
         if self.proc.poll() is None:
             self.proc.terminate()
             try:
-                self.proc.wait(timeout=5)
+                self.proc.wait(timeout=self.grace)
             except subprocess.TimeoutExpired:
                 self.proc.kill()
                 self.proc.wait()
         self._join()
-        try:
-            os.unlink(self.output)
-        except OSError:
-            pass
+        self._remove_work()
+
+    def _remove_work(self):
+        for p in (self.work, self.work + ".partial"):
+            try:
+                os.unlink(p)
+            except OSError:
+                pass
 
     def _join(self):
         self._out.join(timeout=5)
         self._err.join(timeout=5)
 
     def wait(self):
-        """Blocks until the process ends (the background/test path); raises SptToolError."""
+        """Blocks until the process ends (the background/test path), then moves the painting to
+        OUTPUT; raises SptToolError (and removes spt's files) when it failed."""
         self.proc.wait()
         self._join()
-        self.check()
+        try:
+            self.check()
+            os.replace(self.work, self.output)
+        except OSError as e:
+            self._remove_work()
+            raise SptToolError(f"cannot write {self.output}: {e.strerror or e}") from None
+        except SptToolError:
+            self._remove_work()
+            raise
 
     def check(self):
         code = self.proc.returncode
         if code != 0:
             raise SptToolError(f"spt paint failed (exit {code}): {_tail(''.join(self._stderr))}")
-        if not os.path.isfile(self.output):
-            raise SptToolError(f"spt paint wrote no file at {self.output}")
+        if not os.path.isfile(self.work):
+            raise SptToolError(f"spt paint wrote no file at {self.work}")

@@ -1,0 +1,239 @@
+"""Stroke lists as numpy tables: the file layer's fast path (Blender's Python has numpy).
+
+The reference code (reader.py, writer.py, geometry.py) keeps one Python tuple per stroke, which
+is simple and needs only the standard library, but costs microseconds per stroke; a 2-million
+stroke animation needs the vectorised form. A StrokeTable holds one int32 row per stroke:
+
+    KIND SET TMPL ORIENT X Y MA MB MC MD R G B A CURVE
+
+stamp:  SET TMPL ORIENT, X Y = position (Q4); MA..MD = 0
+affine: TMPL, X Y = translation (Q4), MA MB MC MD = matrix (a b c d, Q4); SET = ORIENT = 0
+curve:  CURVE = index into a pool (a list of (n, 3) int32 arrays of x, y, width in Q4) shared by
+        the tables of one file; every other geometry column 0.
+
+Unused columns are always 0, so two rows are equal exactly when the strokes are (curves: when
+their pool entries are the same entry; writers that compare curves dedupe the pool by content).
+tests/blender/test_io.py checks this module against the reference on the same files.
+"""
+
+import struct
+
+import numpy as np
+
+from .model import AFFINE, CURVE, MAX_CURVE_WIDTH, MAX_MATRIX, MAX_POS, STAMP, SptError
+
+KIND, SET, TMPL, ORIENT, X, Y, MA, MB, MC, MD, R, G, B, A, CURVE_ID = range(15)
+NCOL = 15
+
+STAMP_DT = np.dtype([("k", "u1"), ("s", "u1"), ("t", "u1"), ("o", "u1"), ("x", "<i4"), ("y", "<i4"),
+                     ("r", "u1"), ("g", "u1"), ("b", "u1"), ("a", "u1")])
+AFFINE_DT = np.dtype([("k", "u1"), ("t", "u1"), ("x", "<i4"), ("y", "<i4"), ("ma", "<i4"), ("mb", "<i4"),
+                      ("mc", "<i4"), ("md", "<i4"), ("r", "u1"), ("g", "u1"), ("b", "u1"), ("a", "u1")])
+assert STAMP_DT.itemsize == 16 and AFFINE_DT.itemsize == 30
+_CURVE_HEAD = struct.Struct("<BBBBBI")
+_POINT_DT = np.dtype([("x", "<i4"), ("y", "<i4"), ("w", "<u4")])
+
+
+class StrokeTable:
+    """An ordered stroke list: rows (N, NCOL) int32 and the curve pool its CURVE column refers to."""
+
+    __slots__ = ("rows", "curves")
+
+    def __init__(self, rows=None, curves=None):
+        self.rows = np.zeros((0, NCOL), dtype=np.int32) if rows is None else rows
+        self.curves = [] if curves is None else curves
+
+    def __len__(self):
+        return self.rows.shape[0]
+
+    def take(self, index) -> "StrokeTable":
+        return StrokeTable(self.rows[index], self.curves)
+
+    def to_tuples(self) -> list:
+        """The reference form (model.py tuples), for tests and small lists."""
+        out = []
+        for r in self.rows.tolist():
+            k = r[KIND]
+            if k == STAMP:
+                out.append((STAMP, r[SET], r[TMPL], r[ORIENT], r[X], r[Y], r[R], r[G], r[B], r[A]))
+            elif k == AFFINE:
+                out.append((AFFINE, r[TMPL], r[X], r[Y], r[MA], r[MB], r[MC], r[MD], r[R], r[G], r[B], r[A]))
+            else:
+                pts = tuple(tuple(p) for p in self.curves[r[CURVE_ID]].tolist())
+                out.append((CURVE, r[R], r[G], r[B], r[A], pts))
+        return out
+
+    @classmethod
+    def from_tuples(cls, strokes, curves=None) -> "StrokeTable":
+        curves = [] if curves is None else curves
+        rows = np.zeros((len(strokes), NCOL), dtype=np.int32)
+        for i, s in enumerate(strokes):
+            k = s[0]
+            if k == STAMP:
+                rows[i, [KIND, SET, TMPL, ORIENT, X, Y, R, G, B, A]] = s
+            elif k == AFFINE:
+                rows[i, [KIND, TMPL, X, Y, MA, MB, MC, MD, R, G, B, A]] = s
+            else:
+                rows[i, [KIND, R, G, B, A]] = s[:5]
+                rows[i, CURVE_ID] = len(curves)
+                curves.append(np.asarray(s[5], dtype=np.int32).reshape(-1, 3))
+        return cls(rows, curves)
+
+    def record_bytes(self) -> bytes:
+        """The stroke records of a stored frame body (section 4), in order."""
+        return records_bytes(self.rows, self.curves)
+
+
+def concat(tables, curves) -> StrokeTable:
+    rows = [t.rows for t in tables if len(t)]
+    if not rows:
+        return StrokeTable(None, curves)
+    return StrokeTable(np.concatenate(rows) if len(rows) > 1 else rows[0], curves)
+
+
+# ---------------------------------------------------------------- bytes -> table
+
+def _run_length(buf, pos: int, stride: int, maxrun: int, kind: int) -> int:
+    """How many records of `kind` follow at `pos` (fixed size `stride`), at most `maxrun`. Looks
+    at a growing window so alternating kinds cost O(run), not O(rest of the frame)."""
+    run, win = 0, 64
+    while run < maxrun:
+        m = min(win, maxrun - run)
+        ks = buf[pos + stride * run:pos + stride * (run + m):stride]
+        bad = np.flatnonzero(ks != kind)
+        if bad.size:
+            return run + int(bad[0])
+        run += m
+        win *= 4
+    return run
+
+
+def _err(path, offset, what):
+    return SptError(f"{path}: byte {offset}: {what}")
+
+
+def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: int, nsets: int,
+                  norients: int, max_curve_points: int, curves: list):
+    """Parses `count` stroke records of a stored frame body from `pos`; returns (table, pos).
+    Errors name the byte offset (base + position in the body) of the offending record."""
+    buf = np.frombuffer(body, dtype=np.uint8)
+    n = buf.shape[0]
+    pieces = []
+    done = 0
+    while done < count:
+        if pos >= n:
+            raise _err(path, base + pos, f"frame body ends inside its stroke list ({done} of {count} strokes)")
+        kind = int(buf[pos])
+        if kind == STAMP:
+            run = _run_length(buf, pos, 16, min(count - done, (n - pos) // 16), STAMP)
+            if run == 0:
+                raise _err(path, base + pos, "truncated stamp stroke")
+            rec = np.frombuffer(body, dtype=STAMP_DT, count=run, offset=pos)
+            bad = (rec["s"] >= nsets) | (rec["t"] >= ntemplates) | (rec["o"] >= norients)
+            if bad.any():
+                i = int(np.argmax(bad))
+                r = rec[i]
+                raise _err(path, base + pos + 16 * i,
+                           f"stamp stroke refers to set {r['s']}, template {r['t']}, orientation {r['o']} "
+                           f"(file has {nsets} sets, {ntemplates} templates, {norients} orientations)")
+            bad = (np.abs(rec["x"]) > MAX_POS) | (np.abs(rec["y"]) > MAX_POS)
+            if bad.any():
+                raise _err(path, base + pos + 16 * int(np.argmax(bad)), "stamp position out of range")
+            rows = np.zeros((run, NCOL), dtype=np.int32)
+            rows[:, SET] = rec["s"]
+            rows[:, TMPL] = rec["t"]
+            rows[:, ORIENT] = rec["o"]
+            rows[:, X] = rec["x"]
+            rows[:, Y] = rec["y"]
+            rows[:, R] = rec["r"]
+            rows[:, G] = rec["g"]
+            rows[:, B] = rec["b"]
+            rows[:, A] = rec["a"]
+            pieces.append(rows)
+            pos += 16 * run
+            done += run
+        elif kind == AFFINE:
+            run = _run_length(buf, pos, 30, min(count - done, (n - pos) // 30), AFFINE)
+            if run == 0:
+                raise _err(path, base + pos, "truncated affine stroke")
+            rec = np.frombuffer(body, dtype=AFFINE_DT, count=run, offset=pos)
+            m = np.stack([rec["ma"], rec["mb"], rec["mc"], rec["md"]], axis=1).astype(np.int64)
+            checks = ((rec["t"] >= ntemplates, "affine stroke refers to a template the file does not have"),
+                      ((np.abs(rec["x"]) > MAX_POS) | (np.abs(rec["y"]) > MAX_POS), "affine translation out of range"),
+                      (np.abs(m).max(axis=1) > MAX_MATRIX, "affine matrix entry out of range"),
+                      (m[:, 0] * m[:, 3] - m[:, 1] * m[:, 2] == 0, "affine matrix is singular"))
+            for bad, what in checks:
+                if bad.any():
+                    raise _err(path, base + pos + 30 * int(np.argmax(bad)), what)
+            rows = np.zeros((run, NCOL), dtype=np.int32)
+            rows[:, KIND] = AFFINE
+            rows[:, TMPL] = rec["t"]
+            rows[:, X] = rec["x"]
+            rows[:, Y] = rec["y"]
+            rows[:, MA:MD + 1] = m
+            rows[:, R] = rec["r"]
+            rows[:, G] = rec["g"]
+            rows[:, B] = rec["b"]
+            rows[:, A] = rec["a"]
+            pieces.append(rows)
+            pos += 30 * run
+            done += run
+        elif kind == CURVE:
+            if pos + 9 > n:
+                raise _err(path, base + pos, "truncated curve stroke")
+            _, r, g, b, a, npts = _CURVE_HEAD.unpack_from(body, pos)
+            if npts < 1 or npts > max_curve_points:
+                raise _err(path, base + pos, f"curve stroke has {npts} points (allowed 1..{max_curve_points})")
+            if pos + 9 + 12 * npts > n:
+                raise _err(path, base + pos, f"curve stroke of {npts} points runs past the frame body")
+            p = np.frombuffer(body, dtype=_POINT_DT, count=npts, offset=pos + 9)
+            if (np.abs(p["x"]) > MAX_POS).any() or (np.abs(p["y"]) > MAX_POS).any() or (p["w"] > MAX_CURVE_WIDTH).any():
+                raise _err(path, base + pos, "curve point out of range")
+            row = np.zeros((1, NCOL), dtype=np.int32)
+            row[0, [KIND, R, G, B, A, CURVE_ID]] = (CURVE, r, g, b, a, len(curves))
+            curves.append(np.stack([p["x"], p["y"], p["w"].astype(np.int32)], axis=1))
+            pieces.append(row)
+            pos += 9 + 12 * npts
+            done += 1
+        else:
+            raise _err(path, base + pos, f"unknown stroke kind {kind}")
+    rows = np.concatenate(pieces) if len(pieces) > 1 else (pieces[0] if pieces else np.zeros((0, NCOL), np.int32))
+    return StrokeTable(rows, curves), pos
+
+
+# ---------------------------------------------------------------- table -> bytes
+
+def records_bytes(rows, curves) -> bytes:
+    """Stroke records in order; runs of one kind are packed with one structured array each."""
+    n = rows.shape[0]
+    if n == 0:
+        return b""
+    kinds = rows[:, KIND]
+    cuts = np.flatnonzero(kinds[1:] != kinds[:-1]) + 1
+    starts = [0] + cuts.tolist()
+    ends = cuts.tolist() + [n]
+    out = []
+    for a, b in zip(starts, ends):
+        k = int(kinds[a])
+        r = rows[a:b]
+        if k == STAMP:
+            rec = np.empty(b - a, dtype=STAMP_DT)
+            rec["k"] = STAMP
+            for f, c in (("s", SET), ("t", TMPL), ("o", ORIENT), ("x", X), ("y", Y), ("r", R), ("g", G), ("b", B), ("a", A)):
+                rec[f] = r[:, c]
+            out.append(rec.tobytes())
+        elif k == AFFINE:
+            rec = np.empty(b - a, dtype=AFFINE_DT)
+            rec["k"] = AFFINE
+            for f, c in (("t", TMPL), ("x", X), ("y", Y), ("ma", MA), ("mb", MB), ("mc", MC), ("md", MD),
+                         ("r", R), ("g", G), ("b", B), ("a", A)):
+                rec[f] = r[:, c]
+            out.append(rec.tobytes())
+        elif k == CURVE:
+            for row in r.tolist():
+                pts = curves[row[CURVE_ID]]
+                out.append(_CURVE_HEAD.pack(CURVE, row[R], row[G], row[B], row[A], pts.shape[0]))
+                out.append(np.ascontiguousarray(pts, dtype="<i4").tobytes())
+        else:
+            raise SptError(f"unknown stroke kind {k}")
+    return b"".join(out)
