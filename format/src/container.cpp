@@ -99,7 +99,7 @@ Result<std::vector<uint8_t>> encode_tmpl(const Template& t, Coding coding) {
     const bool bitmap = t.kind == TemplateKind::Bitmap;
     const bool ranged = bitmap && coding == Coding::Range;
     s.u8(uint8_t(t.kind));
-    s.u8(ranged ? 1 : 0);
+    s.u8(bitmap ? (ranged ? 1 : 0) : t.supersample);  // analytic kinds: the supersampling grid (3.2)
     s.u16(bitmap ? t.width : 0);
     s.u16(bitmap ? t.height : 0);
     s.u8(uint8_t(t.name.size()));
@@ -125,7 +125,10 @@ Status decode_tmpl(const uint8_t* p, size_t n, uint64_t off, const Limits& lim, 
     t.name.assign(reinterpret_cast<const char*>(c.here()), name_len);
     SPT_TRY(c.skip(name_len, "name"));
     if (t.kind != TemplateKind::Bitmap) {
-        if (coding) return c.error(Code::Unsupported, "analytic template has coding " + std::to_string(coding));
+        // The coding byte of an analytic template is its supersampling grid N: 0 or 2..16.
+        if (coding == 1 || coding > 16)
+            return c.error(Code::Unsupported, "analytic template supersampling " + std::to_string(coding) + " is reserved");
+        t.supersample = coding;
         if (t.width || t.height) return c.error(Code::Corrupt, "analytic template has a size");
         if (c.left()) return c.error(Code::Corrupt, "analytic template has samples");
         return {};
@@ -267,9 +270,6 @@ Status decode_frame_header(const uint8_t* p, size_t n, uint64_t off, FrameHeader
     SPT_TRY(c.u8(fh.coding, "coding"));
     SPT_TRY(c.u16(reserved, "reserved"));
     if (fh.type > 1) return c.error(Code::Unsupported, "frame " + std::to_string(fh.index) + " has reserved frame type " + std::to_string(fh.type));
-    if (fh.coding == 2)
-        return c.error(Code::Unsupported, "frame " + std::to_string(fh.index) +
-                       " uses coding 2 (decoder-replayed candidates), reserved for a later version");
     if (fh.coding > 2) return c.error(Code::Unsupported, "frame " + std::to_string(fh.index) + " has reserved coding " + std::to_string(fh.coding));
     if (reserved) return c.error(Code::Unsupported, "frame " + std::to_string(fh.index) + " has reserved bits set");
     return {};

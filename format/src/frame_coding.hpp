@@ -8,6 +8,7 @@
 
 #include "spt/limits.hpp"
 #include "spt/reader.hpp"
+#include "spt/render.hpp"
 #include "spt/types.hpp"
 #include "spt/writer.hpp"
 #include "validate.hpp"
@@ -28,6 +29,10 @@ struct DecodeContext {
     uint64_t offset = 0;      // file offset of the body, for messages
     std::string where = "frame";  // e.g. "frame 12 (FRAM at byte offset 3456)"
     FieldStats* stats = nullptr;
+    // Coding 2 only (SPEC.md 7.7): the decoder renders while it decodes.
+    const Header* header = nullptr;
+    const Renderer* renderer = nullptr;
+    const std::vector<Stroke>* base = nullptr;  // inter frames: the live list before the frame
 };
 
 // Encodes a validated frame's body. `stats` (optional) receives per-field accounting.
@@ -62,5 +67,20 @@ Status decode_stroke_stream(const uint8_t* p, size_t n, uint32_t count, const De
                             std::vector<Stroke>& out);
 Status decode_edit_stream(const uint8_t* p, size_t n, uint32_t removed_count, bool motion, uint16_t block_size,
                           const DecodeContext& ctx, Frame& out);
+
+// Coding 2 (SPEC.md 7.7). What the encoder needs besides the frame.
+struct ReplayEnv {
+    const Header* header = nullptr;
+    const Renderer* renderer = nullptr;
+    StreamShape shape;
+    const std::vector<Stroke>* live = nullptr;  // the live list before the frame (inter frames)
+};
+// Codes `f` with coding 2 when its strokes are the accepted candidates its ReplayInfo
+// describes; returns false (and leaves `out` unchanged) when they are not, so that the caller
+// falls back to coding 1.
+bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_t>& out, BodySplit* split,
+                        FieldStats* stats);
+Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
+                          BodySplit* split);
 
 }  // namespace spt::detail

@@ -48,6 +48,8 @@ struct StrokeCoderState {
     uint16_t opaque;
     BitTree alpha;
     SIntModel matrix[4];
+    uint16_t axis_aligned, same_scale, similarity;  // affine matrix form (SPEC.md 7.4)
+    BitTree matrix_shift;
     UIntModel points;
     SIntModel width0, dx, dy, dw;
     // predictors
@@ -55,7 +57,6 @@ struct StrokeCoderState {
     int prev_set = 0;
     int prev_orient[16] = {};
     Rgb8 prev_color{128, 128, 128};
-    int32_t prev_matrix[4] = {0, 0, 0, 0};
     int64_t prev_width0 = 0;
     uint32_t grid_w = 0, grid_h = 0;
     std::vector<uint32_t> grid;       // 0 = empty, else 0x01RRGGBB
@@ -72,6 +73,8 @@ struct StrokeCoderState {
         for (auto& t : orient) t.reset(ob);
         for (auto& g : pos) { g[0].reset(sh.width); g[1].reset(sh.height); }
         alpha.reset(8);
+        axis_aligned = same_scale = similarity = kProbInit;
+        matrix_shift.reset(3);
         grid_w = (sh.width + 7) >> kColorCellShift;
         grid_h = (sh.height + 7) >> kColorCellShift;
     }
@@ -146,6 +149,46 @@ void code_color(C& c, StrokeCoderState& st, Rgba8& col, int32_t ax, int32_t ay, 
     st.update(ax, ay, col);
 }
 
+// Affine matrix (SPEC.md 7.4, affine 3): its form (axis-aligned, and then a = d; else a
+// similarity, d = a and b = -c), a shift s <= 4 that all coded entries are multiples of 2^s of
+// (shape painters place on whole or half pixels), then the free entries >> s. Every form is
+// canonical: a decoder rejects a form, or a shift, that the entries would have allowed to be
+// smaller.
+template <class C>
+bool code_affine_matrix(C& c, StrokeCoderState& st, AffineStroke& t, SyntaxError& err) {
+    const bool axis = c.bit(st.axis_aligned, (t.b == 0 && t.c == 0) ? 1 : 0);
+    bool iso = false, sim = false;
+    if (axis) iso = c.bit(st.same_scale, t.a == t.d ? 1 : 0);
+    else sim = c.bit(st.similarity, (t.d == t.a && t.b == -t.c) ? 1 : 0);
+    // The coded entries, by index into (a, b, c, d).
+    int idx[4];
+    int n = 0;
+    if (axis) { idx[n++] = 0; if (!iso) idx[n++] = 3; }
+    else if (sim) { idx[n++] = 0; idx[n++] = 2; }
+    else { idx[0] = 0; idx[1] = 1; idx[2] = 2; idx[3] = 3; n = 4; }
+    int32_t* m[4] = {&t.a, &t.b, &t.c, &t.d};
+    uint32_t shift = 4;
+    if constexpr (!C::kDecoding) {
+        for (int k = 0; k < n; ++k)
+            while (shift > 0 && (*m[idx[k]] & ((1 << shift) - 1)) != 0) --shift;
+    }
+    shift = code_tree(c, st.matrix_shift, shift);
+    if (shift > 4) { err.set("affine matrix shift " + std::to_string(shift) + " is reserved"); return false; }
+    bool could_shift_more = shift < 4;  // every entry a multiple of 2^(shift+1): not canonical
+    for (int k = 0; k < n; ++k) {
+        const int64_t v = code_sint(c, st.matrix[idx[k]], int64_t(*m[idx[k]]) >> shift);
+        if (v < -(kMaxMatrix >> shift) || v > (kMaxMatrix >> shift)) { err.set("affine matrix entry outside +-2^16"); return false; }
+        *m[idx[k]] = int32_t(v * (int64_t(1) << shift));
+        if (v & 1) could_shift_more = false;
+    }
+    if (could_shift_more) { err.set("affine matrix shift is not the largest"); return false; }
+    if (axis) { t.b = t.c = 0; if (iso) t.d = t.a; else if (t.a == t.d) { err.set("affine matrix form: a = d coded in full"); return false; } }
+    else if (sim) { t.d = t.a; t.b = -t.c; }
+    else if ((t.b == 0 && t.c == 0) || (t.d == t.a && t.b == -t.c)) { err.set("affine matrix form: a special form coded in full"); return false; }
+    if (int64_t(t.a) * t.d - int64_t(t.b) * t.c == 0) { err.set("affine matrix is singular"); return false; }
+    return true;
+}
+
 // One stroke (SPEC.md 7.4.2). Returns false and fills `err` on an invalid coded value.
 template <class C>
 bool code_stroke(C& c, StrokeCoderState& st, Stroke& s, const Limits& lim, SyntaxError& err) {
@@ -200,14 +243,7 @@ bool code_stroke(C& c, StrokeCoderState& st, Stroke& s, const Limits& lim, Synta
         t.ty = int32_t(code_position(c, st.pos[1][1], t.ty, sh.height, err));
         if (err.bad) return false;
         c.set_field(Field::Geometry);
-        int32_t* m[4] = {&t.a, &t.b, &t.c, &t.d};
-        for (int i = 0; i < 4; ++i) {
-            const int64_t v = code_sint(c, st.matrix[i], int64_t(*m[i]) - st.prev_matrix[i]) + st.prev_matrix[i];
-            if (v < -kMaxMatrix || v > kMaxMatrix) { err.set("affine matrix entry outside +-2^16"); return false; }
-            *m[i] = int32_t(v);
-            st.prev_matrix[i] = int32_t(v);
-        }
-        if (int64_t(t.a) * t.d - int64_t(t.b) * t.c == 0) { err.set("affine matrix is singular"); return false; }
+        if (!code_affine_matrix(c, st, t, err)) return false;
         code_color(c, st, t.color, t.tx, t.ty, 0, err);
         return !err.bad;
     }

@@ -67,12 +67,15 @@ private:
 struct InverseMap {
     LinearMap u, v;                    // pixel (x, y) -> template (U, V), Q16
     int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // inclusive pixel box; empty when x1 < x0
+    uint32_t aa = 1;  // samples per axis and pixel (SPEC 8.2): 1 = the pixel centre only
 };
 
 // SPEC 8.3: stamp of set size (w, h) at orientation (cos, sin) Q14, centred on pixel (0, 0).
-InverseMap stamp_inverse(uint32_t w, uint32_t h, Orientation o);
-// SPEC 8.2: affine stroke; returns false for a singular matrix (draws nothing).
-bool affine_inverse(const AffineStroke& s, InverseMap& out);
+// `supersample` is the template's TMPL value (0 or 2..16, SPEC 3.2).
+InverseMap stamp_inverse(uint32_t w, uint32_t h, Orientation o, uint8_t supersample = 0);
+// SPEC 8.2: affine stroke; returns false for a singular matrix (draws nothing). A supersampled
+// template widens the evaluation box by half a pixel.
+bool affine_inverse(const AffineStroke& s, InverseMap& out, uint8_t supersample = 0);
 
 // Coverage of the map over the pixel rows [y0, y1] and columns [x0, x1] (already clipped by
 // the caller to a sub-box of m's box): row-major into `out` (size (x1-x0+1)*(y1-y0+1)).
@@ -87,7 +90,7 @@ bool map_row_range(const InverseMap& m, int64_t y, int64_t& x0, int64_t& x1);
 void rasterize_map_row(const InverseMap& m, const Template& t, int64_t y, int64_t x0, int64_t x1,
                        uint8_t* out);
 // The inverse map of a stamp whose centre pixel is (cx, cy), in canvas coordinates.
-InverseMap stamp_inverse_at(uint32_t w, uint32_t h, Orientation o, int64_t cx, int64_t cy);
+InverseMap stamp_inverse_at(uint32_t w, uint32_t h, Orientation o, int64_t cx, int64_t cy, uint8_t supersample = 0);
 
 // SPEC 8.5: coverage (0 or 255) of a curve over the pixel box [x0, x1] x [y0, y1], row-major
 // into `out` (zeroed by the callee). Pixels of the box outside the curve get 0.

@@ -6,6 +6,7 @@
 #include "container.hpp"
 #include "frame_coding.hpp"
 #include "spt/reader.hpp"
+#include "spt/render.hpp"
 #include "validate.hpp"
 
 namespace spt {
@@ -75,6 +76,7 @@ private:
     // strokes_at cache
     std::vector<Stroke> live_;
     size_t live_pos_ = SIZE_MAX;
+    std::unique_ptr<Renderer> renderer_;  // coding 2 frames render while they decode
 };
 
 Status ReaderImpl::read_chunk(uint64_t off, Chunk& c, bool whole) {
@@ -366,6 +368,25 @@ Result<Frame> ReaderImpl::decode(size_t pos, FieldStats* stats) {
     ctx.offset = c.payload_offset() + 8;
     ctx.where = where;
     ctx.stats = stats;
+    if (fh.coding == uint8_t(Coding::Replay)) {
+        // Coding 2 renders while it decodes (SPEC.md 7.7): an inter frame needs the live list
+        // before it, which strokes_at() keeps.
+        if (!renderer_) {
+            auto r = Renderer::create(info_.header, info_.templates);
+            if (!r) return make_error(r.error().code, where + ": " + r.error().message, e.offset);
+            renderer_ = std::move(*r);
+        }
+        ctx.header = &info_.header;
+        ctx.renderer = renderer_.get();
+        if (fh.type == uint8_t(FrameType::Inter)) {
+            if (live_pos_ == SIZE_MAX || live_pos_ + 1 != pos) {
+                auto prev = strokes_at(pos - 1);
+                if (!prev) return prev.error();
+            }
+            ctx.base = &live_;
+            ctx.prev_live = live_.size();
+        }
+    }
     Frame f;
     f.index = fh.index;
     SPT_TRY(detail::decode_frame_body(FrameType(fh.type), Coding(fh.coding), c.payload.data() + 8, c.length - 8, ctx, f, nullptr));

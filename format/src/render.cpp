@@ -102,14 +102,15 @@ void RendererImpl::stroke_box(const Stroke& s, int64_t& x0, int64_t& y0, int64_t
                 y0 = cy + f->y0; y1 = y0 + int64_t(f->rows.size()) - 1;
             } else {
                 const StrokeSet& ss = header_.sets[t.set];
-                const InverseMap m = stamp_inverse_at(ss.width, ss.height, header_.orientations[t.orient], cx, cy);
+                const InverseMap m = stamp_inverse_at(ss.width, ss.height, header_.orientations[t.orient], cx, cy,
+                                                      templates_[t.tmpl].supersample);
                 x0 = m.x0; x1 = m.x1; y0 = m.y0; y1 = m.y1;
             }
             return;
         }
         case StrokeKind::Affine: {
             InverseMap m;
-            if (!affine_inverse(s.affine, m)) return;
+            if (!affine_inverse(s.affine, m, templates_[s.affine.tmpl].supersample)) return;
             x0 = m.x0; x1 = m.x1; y0 = m.y0; y1 = m.y1;
             return;
         }
@@ -155,14 +156,15 @@ void RendererImpl::draw_into(const BlendTarget& t, const Stroke& s) const {
                 blend_spans(t, *f, cx + f->x0, cy + f->y0, c);
             } else {
                 const StrokeSet& ss = header_.sets[st.set];
-                draw_map(t, stamp_inverse_at(ss.width, ss.height, header_.orientations[st.orient], cx, cy),
+                draw_map(t, stamp_inverse_at(ss.width, ss.height, header_.orientations[st.orient], cx, cy,
+                                             templates_[st.tmpl].supersample),
                          templates_[st.tmpl], c);
             }
             return;
         }
         case StrokeKind::Affine: {
             InverseMap m;
-            if (affine_inverse(s.affine, m)) draw_map(t, m, templates_[s.affine.tmpl], c);
+            if (affine_inverse(s.affine, m, templates_[s.affine.tmpl].supersample)) draw_map(t, m, templates_[s.affine.tmpl], c);
             return;
         }
         case StrokeKind::Curve: draw_curve(t, s.curve); return;
@@ -199,7 +201,7 @@ Status RendererImpl::stroke_mask(const Stroke& s, Mask& out) const {
         cov = f.a;
     } else if (s.kind == StrokeKind::Affine) {
         InverseMap m;
-        if (!affine_inverse(s.affine, m) || m.x1 < m.x0 || m.y1 < m.y0) return {};
+        if (!affine_inverse(s.affine, m, templates_[s.affine.tmpl].supersample) || m.x1 < m.x0 || m.y1 < m.y0) return {};
         x0 = m.x0; y0 = m.y0; x1 = m.x1; y1 = m.y1;
         if (uint64_t(x1 - x0 + 1) * uint64_t(y1 - y0 + 1) > kMaxMaskPixels)
             return make_error(Code::LimitExceeded, "stroke_mask: affine stroke box above 2^26 pixels");
@@ -249,6 +251,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Header& h, const std::v
                    t.kind != TemplateKind::Triangle) {
             return bad("template " + std::to_string(i) + ": unknown kind " + std::to_string(int(t.kind)));
         }
+        if (t.kind == TemplateKind::Bitmap ? t.supersample != 0 : (t.supersample == 1 || t.supersample > 16))
+            return bad("template " + std::to_string(i) + ": supersampling " + std::to_string(t.supersample) +
+                       " (analytic kinds: 0 or 2..16; bitmaps: 0)");
     }
     return std::unique_ptr<Renderer>(new RendererImpl(h, templates));
 }

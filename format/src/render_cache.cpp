@@ -27,7 +27,7 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
         f = slot.load(std::memory_order_acquire);
         if (!f) {
             const StrokeSet& ss = header_.sets[set];
-            const InverseMap m = stamp_inverse(ss.width, ss.height, header_.orientations[orient]);
+            const InverseMap m = stamp_inverse(ss.width, ss.height, header_.orientations[orient], templates_[tmpl].supersample);
             const int64_t w = m.x1 - m.x0 + 1, h = m.y1 - m.y0 + 1;
             // Upper bound of the stored size, checked before anything is allocated.
             const uint64_t bound = uint64_t(w) * uint64_t(h) * 3 + uint64_t(h) * (kSpanPad + sizeof(SpanRow));
@@ -83,7 +83,7 @@ const Mask& RendererImpl::stamp_footprint(uint8_t set, uint8_t tmpl, uint8_t ori
     std::lock_guard<std::mutex> lock(mutex_);
     if (const Mask* f = slot.load(std::memory_order_acquire)) return *f;
     const StrokeSet& ss = header_.sets[set];
-    const InverseMap m = stamp_inverse(ss.width, ss.height, header_.orientations[orient]);
+    const InverseMap m = stamp_inverse(ss.width, ss.height, header_.orientations[orient], templates_[tmpl].supersample);
     const int64_t w = m.x1 - m.x0 + 1, h = m.y1 - m.y0 + 1;
     std::vector<uint8_t> full(size_t(w * h));
     rasterize_map(m, templates_[tmpl], m.x0, m.y0, m.x1, m.y1, full.data());

@@ -52,8 +52,11 @@ Status check_template(const Template& t, const Limits& lim, Code code, const std
             return fail(Code::LimitExceeded, where, "bitmap template size exceeds the limits", off);
         if (t.pixels.size() != size_t(t.width) * t.height)
             return fail(code, where, "bitmap template has " + std::to_string(t.pixels.size()) + " samples, not width*height", off);
+        if (t.supersample) return fail(code, where, "bitmap template with supersampling", off);
     } else if (t.width || t.height || !t.pixels.empty()) {
         return fail(code, where, "analytic template has a size or samples", off);
+    } else if (t.supersample == 1 || t.supersample > 16) {
+        return fail(Code::Unsupported, where, "template supersampling " + std::to_string(t.supersample) + " is not 0 or 2..16", off);
     }
     return {};
 }

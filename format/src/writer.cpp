@@ -6,6 +6,8 @@
 
 #include "container.hpp"
 #include "frame_coding.hpp"
+#include "spt/reader.hpp"
+#include "spt/render.hpp"
 #include "spt/writer.hpp"
 #include "validate.hpp"
 
@@ -23,6 +25,7 @@ const char* field_name(Field f) {
         case Field::Geometry: return "geometry";
         case Field::Removal: return "removals";
         case Field::Motion: return "motion";
+        case Field::Candidates: return "candidates";
     }
     return "?";
 }
@@ -37,10 +40,18 @@ class FileWriter final : public Writer {
 public:
     FileWriter(std::string path, std::string out_path, const StreamInfo& info, const WriterOptions& opts)
         : path_(std::move(path)), out_path_(std::move(out_path)), header_(info.header),
-          shape_(detail::StreamShape::of(info.header, info.templates.size())), opts_(opts) {}
+          shape_(detail::StreamShape::of(info.header, info.templates.size())), opts_(opts) {
+        // Frame coding 2 is format 1.1 (SPEC.md 7.7).
+        if (opts_.coding == Coding::Replay && header_.version_minor < 1) header_.version_minor = 1;
+    }
     ~FileWriter() override { if (!finished_) abort(); }
 
     Status open_and_write_start(const StreamInfo& info) {
+        if (opts_.coding == Coding::Replay) {
+            auto r = Renderer::create(info.header, info.templates);
+            if (!r) return r.error();
+            renderer_ = std::move(*r);
+        }
         file_ = std::fopen(out_path_.c_str(), "wb");
         if (!file_) return make_error(Code::IoError, out_path_ + ": cannot create: " + std::strerror(errno));
         ByteSink s;
@@ -48,7 +59,7 @@ public:
         Header h = header_;
         h.frame_count = kUnknownFrameCount;  // patched in finish()
         detail::put_chunk(s, "HEAD", detail::encode_head(h));
-        const Coding tc = opts_.coding == Coding::Range ? opts_.template_coding : Coding::Stored;
+        const Coding tc = opts_.coding != Coding::Stored ? opts_.template_coding : Coding::Stored;
         for (const auto& t : info.templates) {
             auto payload = detail::encode_tmpl(t, tc);
             if (!payload) return payload.error();
@@ -73,9 +84,17 @@ public:
         lim.max_strokes_per_frame = lim.max_live_strokes = 0xFFFFFFFFu;
         if (auto st = detail::check_frame(frame, shape_, lim, live_, Code::InvalidArgument, where, pos_); !st) return st;
         ByteSink chunk_payload;
-        detail::encode_frame_header(chunk_payload, {frame.index, uint8_t(frame.type), uint8_t(opts_.coding)});
         detail::BodySplit split;
-        detail::encode_frame_body(frame, opts_.coding, shape_, chunk_payload.bytes(), &split, &stats_.fields);
+        // Coding 2 when the frame's strokes replay from its generator, else coding 1 (SPEC.md 7.7).
+        Coding coding = opts_.coding == Coding::Replay ? Coding::Range : opts_.coding;
+        std::vector<uint8_t> body;
+        if (opts_.coding == Coding::Replay && frame.replay.present) {
+            detail::ReplayEnv env{&header_, renderer_.get(), shape_, &live_strokes_};
+            if (detail::encode_replay_body(frame, env, body, &split, &stats_.fields)) coding = Coding::Replay;
+        }
+        if (coding != Coding::Replay) detail::encode_frame_body(frame, coding, shape_, body, &split, &stats_.fields);
+        detail::encode_frame_header(chunk_payload, {frame.index, uint8_t(frame.type), uint8_t(coding)});
+        chunk_payload.raw(body.data(), body.size());
         if (chunk_payload.size() > 0xFFFFFFFFull)
             return fail(make_error(Code::InvalidArgument, where + ": frame body exceeds 4 GiB"));
         ByteSink chunk;
@@ -85,6 +104,12 @@ public:
         index_.push_back({frame.index, uint8_t(frame.type), offset});
         ++next_index_;
         live_ = frame.type == FrameType::Key ? frame.added.size() : live_ - frame.removed.size() + frame.added.size();
+        if (opts_.coding == Coding::Replay) {
+            // Coding 2 predicts from the canvas, so this writer keeps the live list.
+            Limits unlimited;
+            unlimited.max_live_strokes = 0xFFFFFFFFu;
+            if (auto st = apply_frame(live_strokes_, frame, header_, unlimited); !st) return fail(st.error());
+        }
         stats_.frame_bytes += chunk.size();
         stats_.stroke_bytes += split.stroke_bytes;
         stats_.motion_bytes += split.motion_bytes;
@@ -170,6 +195,8 @@ private:
     std::vector<detail::IndexEntry> index_;
     std::vector<Roi> rois_;
     WriteStats stats_;
+    std::unique_ptr<Renderer> renderer_;      // coding 2 only
+    std::vector<Stroke> live_strokes_;        // coding 2 only
     bool finished_ = false, failed_ = false, removed_ = false;
 };
 
@@ -187,7 +214,7 @@ Result<std::unique_ptr<Writer>> Writer::create(const std::string& path, const St
     for (size_t i = 0; i < info.templates.size(); ++i)
         if (auto st = detail::check_template(info.templates[i], lim, Code::InvalidArgument, path + ": template " + std::to_string(i), 0); !st)
             return st.error();
-    if (opts.coding != Coding::Stored && opts.coding != Coding::Range)
+    if (opts.coding != Coding::Stored && opts.coding != Coding::Range && opts.coding != Coding::Replay)
         return make_error(Code::InvalidArgument, path + ": unknown frame coding");
     const std::string out_path = opts.atomic_rename ? path + ".partial" : path;
     auto w = std::make_unique<FileWriter>(path, out_path, info, opts);

@@ -231,9 +231,12 @@ TEST(ContainerWriter, ReservedCodingTwoIsUnsupported) {
     }
     crc = ~crc;
     std::memcpy(&b[off + 8 + len], &crc, 4);
+    // Coding 2 is defined since format 1.1 (SPEC.md 7.7): a stored body relabelled as coding 2
+    // is not a valid coding-2 body, so opening or decoding it fails cleanly.
     auto d = Reader::open_memory(b.data(), b.size());
-    ASSERT_FALSE(d.ok());
-    EXPECT_EQ(d.error().code, Code::Unsupported);
-    EXPECT_NE(d.error().message.find("coding 2"), std::string::npos) << d.error().message;
+    if (d.ok()) {
+        auto s = (*d)->strokes_at(0);
+        EXPECT_FALSE(s.ok());
+    }
     std::remove(path.c_str());
 }

@@ -84,8 +84,24 @@ TEST(GoldenConformance, StoredTwinsAreStoredAndRangeFilesAreRangeCoded) {
         auto o = Reader::open(kDir + "/" + r.file);
         ASSERT_TRUE(o.ok());
         const bool stored = r.file.find(".stored.spt") != std::string::npos;
-        for (const auto& e : (*o)->frames()) EXPECT_EQ(e.coding, stored ? Coding::Stored : Coding::Range) << r.file;
+        // replay_*.spt: frame coding 2 (SPEC.md 7.7) in every frame, which needs format 1.1.
+        const bool replay = !stored && r.file.rfind("replay_", 0) == 0;
+        const Coding want = stored ? Coding::Stored : replay ? Coding::Replay : Coding::Range;
+        for (const auto& e : (*o)->frames()) EXPECT_EQ(e.coding, want) << r.file;
+        if (replay) EXPECT_GE((*o)->info().header.version_minor, 1) << r.file;
     }
+}
+
+// Coding 2 is covered by a key frame and by an inter frame (removals, motion, block region).
+TEST(GoldenConformance, ReplayGoldenHasKeyAndInterFrames) {
+    auto o = Reader::open(kDir + "/replay_paint.spt");
+    ASSERT_TRUE(o.ok()) << o.error().message;
+    bool key = false, inter = false;
+    for (const auto& e : (*o)->frames()) {
+        ASSERT_EQ(e.coding, Coding::Replay);
+        (e.type == FrameType::Key ? key : inter) = true;
+    }
+    EXPECT_TRUE(key && inter);
 }
 
 TEST(GoldenConformance, SpecialCasesAreWhatTheyClaim) {

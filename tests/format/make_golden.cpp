@@ -13,6 +13,7 @@
 
 #include "format/coding_random_streams.hpp"
 #include "format/golden_canonical.hpp"
+#include "spt/replay.hpp"
 #include "spt/spt.hpp"
 
 using namespace spt;
@@ -26,6 +27,7 @@ struct Case {
     RandomStream stream;
     bool drop_index = false;           // rewrite without indx (IEND index_offset 0)
     bool unknown_ancillary = false;    // insert an unknown ancillary chunk after HEAD
+    bool replay = false;               // <name>.spt in frame coding 2 (every frame must replay)
 };
 
 Template ellipse() { Template t; t.kind = TemplateKind::Ellipse; t.name = "ellipse"; return t; }
@@ -52,6 +54,108 @@ Header header(uint32_t w, uint32_t h, int sets, int orients) {
 Stroke stamp(int set, int tmpl, int o, int32_t x, int32_t y, Rgba8 c) {
     StampStroke s; s.set = uint8_t(set); s.tmpl = uint8_t(tmpl); s.orient = uint8_t(o); s.x = x; s.y = y; s.color = c;
     return Stroke::make_stamp(s);
+}
+
+// ---- painter-like frames for frame coding 2 (SPEC.md 7.7) ----
+// Candidates come from the generator; a fixed quarter of them is "accepted"; the colour is a
+// synthetic model's colour at the pixel, put on the lattice of step q around the footprint mean
+// of the canvas painted so far (computed here from SPEC.md 7.7.4, independently of libspt).
+Rgb8 model_colour(uint32_t x, uint32_t y) {
+    const int dx = int(x) - 20, dy = int(y) - 14;
+    const bool disc = dx * dx + dy * dy < 100;
+    return disc ? Rgb8{uint8_t(200 - 3 * x), 40, uint8_t(60 + 4 * y)} : Rgb8{uint8_t(30 + 4 * x), uint8_t(220 - 5 * y), 90};
+}
+int on_lattice(int base, int target, int q) {
+    int r = (target - base) >= 0 ? (target - base + q / 2) / q : -((base - target + q / 2) / q);
+    while (base + q * r > 255) --r;
+    while (base + q * r < 0) ++r;
+    return base + q * r;
+}
+Rgba8 lattice_colour(const Canvas& cv, const Mask& fp, int32_t px, int32_t py, Rgb8 bg, Rgb8 t, int q) {
+    int64_t sa = 0, sk[3] = {0, 0, 0};
+    for (uint32_t j = 0; j < fp.h; ++j)
+        for (uint32_t i = 0; i < fp.w; ++i) {
+            const int64_t x = px + fp.x0 + int64_t(i), y = py + fp.y0 + int64_t(j);
+            const uint8_t a = fp.a[size_t(j) * fp.w + i];
+            if (!a || x < 0 || y < 0 || x >= int64_t(cv.width) || y >= int64_t(cv.height)) continue;
+            sa += a;
+            for (int k = 0; k < 3; ++k) sk[k] += a * int64_t(cv.rgb[(size_t(y) * cv.width + size_t(x)) * 3 + k]);
+        }
+    int p[3] = {bg.r, bg.g, bg.b};
+    if (sa > 0)
+        for (int k = 0; k < 3; ++k) p[k] = int((sk[k] + sa / 2) / sa);
+    const int g = on_lattice(p[1], t.g, q);
+    const int r = on_lattice(std::clamp(g + p[0] - p[1], 0, 255), t.r, q);
+    const int b = on_lattice(std::clamp(g + p[2] - p[1], 0, 255), t.b, q);
+    return {uint8_t(r), uint8_t(g), uint8_t(b), 255};
+}
+// Appends `per_set` painter-like strokes of every set to f.added, drawing them on `cv`.
+void paint_replayed(Frame& f, Canvas& cv, const Header& hd, const Renderer& rd, uint32_t templates, int per_set) {
+    const ReplayInfo& ri = f.replay;
+    for (uint32_t s = 0; s < hd.sets.size(); ++s) {
+        const replay::CandidateDomain dom(hd.width, hd.height, ri.regions.empty() ? ReplayRegion{} : ri.regions[s]);
+        if (dom.size() == 0) continue;
+        int kept = 0;
+        for (uint64_t n = 0; kept < per_set; ++n) {
+            if ((replay::draw(ri.seed, s, n, replay::Stream::Accept) >> 62) != 0) continue;  // rejected
+            const replay::Candidate c = replay::candidate(ri.seed, s, n, dom, templates, uint32_t(hd.orientations.size()));
+            // Coded orientations follow a synthetic field, as the painter's edge field would.
+            const uint8_t o = ri.random_orientation ? c.orient : uint8_t((c.x / 6 + c.y / 5) % hd.orientations.size());
+            const Mask& fp = rd.stamp_footprint(uint8_t(s), c.tmpl, o);
+            const Rgba8 col = lattice_colour(cv, fp, int32_t(c.x), int32_t(c.y), hd.background, model_colour(c.x, c.y), ri.color_step);
+            const Stroke st = stamp(int(s), c.tmpl, o, int32_t(16 * c.x + 8), int32_t(16 * c.y + 8), col);
+            (void)rd.draw(cv, st);
+            f.added.push_back(st);
+            ++kept;
+        }
+    }
+}
+Case replay_case() {
+    Case c{"replay_paint", "frame coding 2 (format 1.1): a painter-like key frame (coded orientations, colour step 4, "
+                           "rectangles for the finest set), then an inter frame with removals, motion and a block-mask "
+                           "region (drawn orientations, colour step 8)", {}};
+    c.replay = true;
+    Header hd = header(48, 32, 3, 8);
+    hd.sets = {{16, 8}, {8, 4}, {4, 2}};
+    c.stream.info.header = hd;
+    c.stream.info.templates = {bitmap(9, 7), ellipse()};
+    auto rd = Renderer::create(hd, c.stream.info.templates);
+    Canvas cv(hd.width, hd.height, hd.background);
+    Frame k;
+    k.replay.present = true;
+    k.replay.seed = 0x5EED2024;
+    k.replay.color_step = 4;
+    k.replay.regions.assign(3, ReplayRegion{});
+    k.replay.regions[2].use_rects = true;
+    k.replay.regions[2].rects = {{4, 4, 20, 12}, {30, 10, 10, 20}};
+    paint_replayed(k, cv, hd, **rd, 2, 12);
+    Frame i;
+    i.index = 1;
+    i.type = FrameType::Inter;
+    i.removed = {0, 5, 13, 30};
+    i.motion.block_size = 16; i.motion.cols = 3; i.motion.rows = 2;
+    i.motion.vectors = {{0, 0}, {16, -8}, {0, 0}, {-24, 0}, {0, 0}, {3, 5}};
+    i.replay.present = true;
+    i.replay.seed = 77;
+    i.replay.random_orientation = true;
+    i.replay.color_step = 8;
+    ReplayRegion blocks;
+    blocks.use_blocks = true;
+    blocks.block_size = 8;
+    blocks.blocks = {0, 1, 1, 0, 0, 0,
+                     0, 1, 1, 1, 0, 0,
+                     0, 0, 0, 1, 1, 0,
+                     0, 0, 0, 0, 1, 0};
+    i.replay.regions.assign(3, blocks);
+    // The coding-2 starting canvas of an inter frame: the live list after removals and motion.
+    std::vector<Stroke> live = k.added;
+    Frame edits = i;
+    (void)apply_frame(live, edits, hd);
+    cv.fill(hd.background);
+    for (const auto& s : live) (void)(*rd)->draw(cv, s);
+    paint_replayed(i, cv, hd, **rd, 2, 5);
+    c.stream.frames = {k, i};
+    return c;
 }
 
 std::vector<Case> cases() {
@@ -141,6 +245,7 @@ std::vector<Case> cases() {
         Case c{"random_mix", "a random stream of every stroke kind with motion and removals (seed 42)", make_random_stream(42, o)};
         v.push_back(c);
     }
+    v.push_back(replay_case());
     return v;
 }
 
@@ -221,6 +326,7 @@ int main(int argc, char** argv) {
     std::string manifest =
         "# Golden conformance files of SPEC.md (format 1.0). Generated by tests/format/make_golden.cpp.\n"
         "# Each <name>.spt (frame coding 1) has a <name>.stored.spt twin (coding 0) with the same frames.\n"
+        "# replay_*.spt use frame coding 2 (SPEC.md 7.7, format 1.1) in every frame instead of coding 1.\n"
         "# live_fnv1a64: FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3) over the\n"
         "#   canonical stored-mode bytes of the live stroke list after applying the frame: a coding-0\n"
         "#   key frame body (SPEC.md 6), u32 stroke_count then the stroke records.\n"
@@ -235,7 +341,7 @@ int main(int argc, char** argv) {
             const std::string file = c.name + (coding == Coding::Stored ? ".stored.spt" : ".spt");
             const std::string path = dir + "/" + file;
             WriterOptions o;
-            o.coding = coding;
+            o.coding = c.replay && coding == Coding::Range ? Coding::Replay : coding;
             auto w = Writer::create(path, c.stream.info, o);
             if (!w) { std::cerr << file << ": " << w.error().message << "\n"; return 1; }
             for (const auto& f : c.stream.frames)
@@ -246,6 +352,12 @@ int main(int argc, char** argv) {
                 auto chunks = split_chunks(read_bytes(path));
                 if (c.unknown_ancillary) chunks.insert(chunks.begin() + 1, RawChunk{"xtRa", {'s', 'k', 'i', 'p', ' ', 'm', 'e'}});
                 write_file(path, assemble(chunks, !c.drop_index));
+            }
+            if (o.coding == Coding::Replay) {  // the writer falls back silently: insist on coding 2
+                auto rr = Reader::open(path);
+                if (!rr) { std::cerr << file << ": " << rr.error().message << "\n"; return 1; }
+                for (const auto& e : (*rr)->frames())
+                    if (e.coding != Coding::Replay) { std::cerr << file << ": frame not in coding 2\n"; return 1; }
             }
             // Record the hashes from an independent application of the frames.
             std::vector<Stroke> live;

@@ -5,6 +5,7 @@
 // produce identical canvases on thousands of random strokes.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 
 #include "format/render_test_util.hpp"
@@ -50,6 +51,16 @@ struct Ref {
         return int(fdiv(top * (256 - fy) + bot * fy + 32768, 65536));
     }
 
+    // 8.2 supersampling: N x N samples at 1/256-pixel offsets o_k = floor((2k + 1) * 128 / N),
+    // coverage round(255 * inside / N^2), every sample through the same 8.4 test.
+    static i64 offset(i64 k, i64 n) { return (2 * k + 1) * 128 / n; }
+    static int supersampled(i64 n, const std::function<bool(i64, i64)>& inside) {
+        i64 count = 0;
+        for (i64 q = 0; q < n; ++q)
+            for (i64 p = 0; p < n; ++p) count += inside(offset(p, n), offset(q, n));
+        return int((255 * count + n * n / 2) / (n * n));
+    }
+
     // Coverage of a stroke at canvas pixel (x, y).
     int coverage(const spt::Stroke& s, i64 x, i64 y) const {
         if (s.kind == spt::StrokeKind::Stamp) {
@@ -60,6 +71,11 @@ struct Ref {
             const i64 rx = (W * std::abs(C) + H * std::abs(S)) / 32768 + 1;
             const i64 ry = (W * std::abs(S) + H * std::abs(C)) / 32768 + 1;
             if (i < -rx || i > rx || j < -ry || j > ry) return 0;
+            if (const i64 n = t[st.tmpl].supersample; n > 1)
+                return supersampled(n, [&](i64 op, i64 oq) {
+                    const i64 ii = 256 * i + op - 128, jj = 256 * j + oq - 128;
+                    return cov_template(t[st.tmpl], fdiv(8 * (ii * C + jj * S), 256 * W), fdiv(8 * (jj * C - ii * S), 256 * H)) == 255;
+                });
             const i64 U = fdiv(8 * (i * C + j * S), W), V = fdiv(8 * (j * C - i * S), H);
             return cov_template(t[st.tmpl], U, V);
         }
@@ -68,8 +84,17 @@ struct Ref {
             const i64 det = i64(af.a) * af.d - i64(af.b) * af.c;
             if (det == 0) return 0;
             const i64 X = 16 * x + 8, Y = 16 * y + 8;
-            const i64 ex = std::abs(i64(af.a)) + std::abs(i64(af.b)), ey = std::abs(i64(af.c)) + std::abs(i64(af.d));
+            const i64 n = t[af.tmpl].supersample;
+            const i64 grow = n > 1 ? 8 : 0;
+            const i64 ex = std::abs(i64(af.a)) + std::abs(i64(af.b)) + grow, ey = std::abs(i64(af.c)) + std::abs(i64(af.d)) + grow;
             if (X < af.tx - ex || X > af.tx + ex || Y < af.ty - ey || Y > af.ty + ey) return 0;
+            if (n > 1)
+                return supersampled(n, [&](i64 op, i64 oq) {
+                    const i64 sx = 256 * x + op - 16 * i64(af.tx), sy = 256 * y + oq - 16 * i64(af.ty);
+                    const i64 U = fdiv(i128(4096) * (i128(af.d) * sx - i128(af.b) * sy), det);
+                    const i64 V = fdiv(i128(4096) * (i128(af.a) * sy - i128(af.c) * sx), det);
+                    return cov_template(t[af.tmpl], U, V) == 255;
+                });
             const i64 dx = X - af.tx, dy = Y - af.ty;
             const i64 U = fdiv(i128(65536) * (i128(af.d) * dx - i128(af.b) * dy), det);
             const i64 V = fdiv(i128(65536) * (i128(af.a) * dy - i128(af.c) * dx), det);
@@ -204,6 +229,44 @@ TEST(RenderReference, UncachedHugeStampsEqualReference) {
     ASSERT_TRUE(r->render(fast, v).ok());
     EXPECT_EQ(fast.rgb, slow.rgb);
     EXPECT_LT(r->footprint_cache_bytes(), size_t(32) << 20);  // the 4096 x 4096 ones not stored
+}
+
+// Supersampled analytic templates (SPEC 3.2, 8.2) for several grids, stamps and affine strokes.
+TEST(RenderReference, SupersampledTemplatesEqualReference) {
+    std::mt19937 rng(316);
+    std::vector<spt::Template> templates;
+    for (int n : {2, 3, 4, 8, 16, 5})
+        for (auto k : {spt::TemplateKind::Ellipse, spt::TemplateKind::Rectangle, spt::TemplateKind::Triangle}) {
+            templates.push_back(analytic(k));
+            templates.back().supersample = uint8_t(n);
+        }
+    templates.push_back(analytic(spt::TemplateKind::Ellipse));  // and one point-sampled
+    auto hd = make_header(40, 30, {{24, 11}, {5, 5}, {1, 2}}, 8);
+    auto r = make_renderer(hd, templates);
+    const Ref ref{hd, templates};
+    for (int round = 0; round < 4; ++round) {
+        const auto v = random_strokes(rng, hd, templates.size(), 150);
+        spt::Canvas fast, slow(hd.width, hd.height, hd.background);
+        ASSERT_TRUE(r->render(fast, v).ok());
+        for (size_t i = 0; i < v.size(); ++i) {
+            spt::Canvas one = slow;
+            ref.draw(slow, v[i]);
+            ASSERT_TRUE(r->draw(one, v[i]).ok());
+            ASSERT_EQ(one.rgb, slow.rgb) << "round " << round << " stroke " << i << " kind " << int(v[i].kind);
+        }
+        ASSERT_EQ(fast.rgb, slow.rgb);
+    }
+    // An axis-aligned half-pixel edge gives exactly half coverage.
+    spt::AffineStroke a;
+    a.tmpl = 1; a.tx = 16 * 10; a.ty = 16 * 10 + 8; a.a = 16 * 4; a.d = 16 * 4; a.color = {255, 255, 255, 255};
+    spt::Mask m;
+    ASSERT_TRUE(r->stroke_mask(spt::Stroke::make_affine(a), m).ok());  // template 1: rectangle, N = 2
+    // Left edge at x = 6.0 px: pixel 6 fully inside, pixel 5 has no sample inside.
+    const auto at = [&](int x, int y) { return int(m.a[size_t((y - m.y0) * int(m.w) + (x - m.x0))]); };
+    EXPECT_EQ(at(6, 10), 255);
+    EXPECT_EQ(at(5, 10), 0);
+    // Top edge at y = 6.5 px: in pixel 6 one of the two sample rows is inside.
+    EXPECT_EQ(at(8, 6), 128);
 }
 
 TEST(RenderReference, RenderingIsDeterministic) {

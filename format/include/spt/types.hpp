@@ -51,6 +51,10 @@ struct Template {
     uint16_t height = 0;   // Bitmap only
     std::vector<uint8_t> pixels;  // Bitmap only, width * height
     std::string name;      // informative (e.g. "bristle"); may be empty
+    // Analytic kinds only: 0 samples the template once, at the pixel centre; N = 2..16 counts
+    // an N x N grid of samples per pixel and gives coverage round(255 * inside / N^2)
+    // (anti-aliased edges, SPEC.md 3.2 and 8.2). Stored in the TMPL coding byte.
+    uint8_t supersample = 0;
     friend bool operator==(const Template&, const Template&) = default;
 };
 
@@ -119,6 +123,33 @@ struct MotionField {
 
 enum class FrameType : uint8_t { Key = 0, Inter = 1 };
 
+// Where the candidates of one stroke set were drawn (SPEC.md 7.7.2): the canvas, intersected
+// with the union of `rects` when `use_rects`, and with a block mask when `use_blocks`.
+struct ReplayRegion {
+    struct Rect {
+        uint32_t x = 0, y = 0, w = 0, h = 0;
+        friend bool operator==(const Rect&, const Rect&) = default;
+    };
+    bool use_rects = false;
+    std::vector<Rect> rects;        // 1..4096 rectangles, each w, h >= 1
+    bool use_blocks = false;
+    uint16_t block_size = 8;        // 8..256 pixels
+    std::vector<uint8_t> blocks;    // ceil(W/B) x ceil(H/B), row-major, 0 or 1
+    friend bool operator==(const ReplayRegion&, const ReplayRegion&) = default;
+};
+
+// How a painter drew a frame's stamp strokes from the generator of SPEC.md 7.7 (spt/replay.hpp).
+// A writer using frame coding 2 codes only which candidates were accepted when the frame's
+// strokes match; otherwise it falls back to coding 1. Not stored as such in any file.
+struct ReplayInfo {
+    bool present = false;
+    uint64_t seed = 0;
+    bool random_orientation = false;     // orientations drawn by the generator, else coded
+    // Colours lie on a lattice of this step around the canvas prediction (SPEC.md 7.7.5), 1..32.
+    uint8_t color_step = 1;
+    std::vector<ReplayRegion> regions;   // one per stroke set; empty = the canvas for every set
+};
+
 // One frame as stored: a key frame replaces the live stroke list; an inter frame edits it.
 // Order of application for inter frames: remove, then move, then append `added`.
 struct Frame {
@@ -127,6 +158,7 @@ struct Frame {
     std::vector<uint32_t> removed;  // inter: indices into the previous list, strictly increasing
     MotionField motion;             // inter: optional
     std::vector<Stroke> added;      // key: the whole list; inter: appended on top
+    ReplayInfo replay;              // optional: how a painter drew `added` (frame coding 2)
 };
 
 struct Rational {

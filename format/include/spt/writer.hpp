@@ -13,6 +13,10 @@ namespace spt {
 enum class Coding : uint8_t {
     Stored = 0,   // fixed-size little-endian fields, no entropy coding (SPEC.md "Stored frames")
     Range = 1,    // context-adaptive binary range coding (SPEC.md "Range-coded frames")
+    // Decoder-replayed candidates (SPEC.md 7.7): frames whose Frame::replay describes how their
+    // stamps were drawn code accept gaps instead of positions, colours and orientations against
+    // the canvas painted so far; any other frame falls back to coding 1.
+    Replay = 2,
 };
 
 struct WriterOptions {
@@ -39,8 +43,9 @@ enum class Field : uint8_t {
     Geometry,     // affine matrix, curve point count, further curve points, widths
     Removal,      // removed stroke indices
     Motion,       // motion field
+    Candidates,   // coding 2: accepted-candidate gaps, per-set counts, candidate regions, seed
 };
-constexpr size_t kFieldCount = 10;
+constexpr size_t kFieldCount = 11;
 const char* field_name(Field f);
 
 struct FieldStats {

@@ -1,0 +1,240 @@
+// Coding 2 frame bodies (SPEC.md 7.7): the coding-1 layout up to the stroke stream, then the
+// frame's generator seed and flags, then one range-coded stream of candidate regions, accepted
+// candidate gaps, orientations and colours predicted from the canvas painted so far.
+#include <memory>
+
+#include "byte_io.hpp"
+#include "frame_coding.hpp"
+#include "replay_strokes.hpp"
+
+namespace spt::detail {
+namespace {
+
+constexpr uint8_t kRandomOrientation = 1;     // flags bit 0
+constexpr uint8_t kMaxColorStep = 32;
+constexpr uint64_t kMaxEncoderScan = 1u << 24;  // candidates searched for one stroke
+
+Error body_error(const DecodeContext& ctx, Code code, const std::string& msg, uint64_t rel = 0) {
+    return make_error(code, ctx.where + ": " + msg + " (body at byte offset " + std::to_string(ctx.offset + rel) + ")",
+                      ctx.offset + rel);
+}
+
+// Matches the frame's strokes to the generator's candidates, set by set: each stroke takes the
+// first candidate after the previous one with its position, template (and orientation when
+// drawn). An earlier identical candidate gives the same stroke, so first match is exact.
+bool plan(const Frame& f, const Header& hd, uint32_t templates, std::vector<ReplaySet>& sets) {
+    const ReplayInfo& ri = f.replay;
+    const uint32_t S = uint32_t(hd.sets.size()), N = uint32_t(hd.orientations.size());
+    if (!ri.present || f.added.empty() || templates == 0 || ri.color_step < 1 || ri.color_step > kMaxColorStep) return false;
+    if (!ri.regions.empty() && ri.regions.size() != S) return false;
+    sets.assign(S, ReplaySet{});
+    for (uint32_t s = 0; s < S; ++s) {
+        if (!ri.regions.empty()) sets[s].region = ri.regions[s];
+        if (!replay::check_region(sets[s].region, hd.width, hd.height).empty()) return false;
+    }
+    int last_set = 0;
+    for (const Stroke& st : f.added) {
+        if (st.kind != StrokeKind::Stamp) return false;
+        const StampStroke& t = st.stamp;
+        if (t.set < last_set || t.set >= S || t.color.a != 255 || (t.x & 15) != 8 || (t.y & 15) != 8) return false;
+        if (t.x < 0 || t.y < 0 || uint32_t(t.x >> 4) >= hd.width || uint32_t(t.y >> 4) >= hd.height) return false;
+        last_set = t.set;
+        sets[t.set].strokes.push_back(st);
+    }
+    for (uint32_t s = 0; s < S; ++s) {
+        ReplaySet& rs = sets[s];
+        if (rs.strokes.empty()) continue;
+        const replay::CandidateDomain dom(hd.width, hd.height, rs.region);
+        if (dom.size() == 0) return false;
+        uint64_t next = 0;
+        for (const Stroke& st : rs.strokes) {
+            const StampStroke& t = st.stamp;
+            const uint32_t x = uint32_t(t.x >> 4), y = uint32_t(t.y >> 4);
+            if (!dom.contains(x, y)) return false;
+            const uint64_t end = std::min(next + kMaxEncoderScan, kMaxReplayCounter);
+            bool found = false;
+            for (uint64_t n = next; n < end; ++n) {
+                uint32_t cx, cy;
+                dom.pixel(replay::below(replay::draw(ri.seed, s, n, replay::Stream::Position), dom.size()), cx, cy);
+                if (cx != x || cy != y) continue;
+                if (replay::below(replay::draw(ri.seed, s, n, replay::Stream::Template), templates) != t.tmpl) continue;
+                if (ri.random_orientation &&
+                    replay::below(replay::draw(ri.seed, s, n, replay::Stream::Orientation), N) != t.orient)
+                    continue;
+                rs.counters.push_back(n);
+                next = n + 1;
+                found = true;
+                break;
+            }
+            if (!found) return false;
+        }
+    }
+    return true;
+}
+
+// The canvas a coding-2 frame starts from: the background, with the live list after the
+// frame's removals and motion drawn on it (inter frames).
+Status start_canvas(const Frame& edits, FrameType type, const Header& hd, const Renderer& renderer,
+                    const std::vector<Stroke>* live, Canvas& canvas) {
+    canvas = Canvas(hd.width, hd.height, hd.background);
+    if (type == FrameType::Key) return {};
+    if (!live) return make_error(Code::InvalidArgument, "a coding-2 inter frame needs the previous live list");
+    std::vector<Stroke> moved = *live;
+    Frame e;
+    e.index = edits.index;
+    e.type = FrameType::Inter;
+    e.removed = edits.removed;
+    e.motion = edits.motion;
+    Limits unlimited;
+    unlimited.max_live_strokes = 0xFFFFFFFFu;
+    SPT_TRY(apply_frame(moved, e, hd, unlimited));
+    return renderer.render(canvas, moved);
+}
+
+template <class C>
+bool code_sets(C& c, std::vector<ReplaySet>& sets, uint64_t seed, bool random_orient, int step, uint64_t added,
+               const Header& hd, uint32_t templates, const Renderer& renderer, Canvas& canvas, SyntaxError& err) {
+    ReplayCoderState st(uint32_t(hd.orientations.size()));
+    uint64_t left = added;
+    for (uint32_t s = 0; s < sets.size(); ++s) {
+        c.set_field(Field::Candidates);
+        if (!code_region(c, st, sets[s].region, hd.width, hd.height, err)) return false;
+        if (!code_replay_set(c, st, sets[s], s, seed, random_orient, step, left, hd, templates, renderer, canvas, err))
+            return false;
+        left -= sets[s].strokes.size();
+    }
+    if (left != 0) { err.set(std::to_string(left) + " of the frame's strokes are missing from its sets"); return false; }
+    return true;
+}
+
+}  // namespace
+
+bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_t>& out, BodySplit* split,
+                        FieldStats* stats) {
+    const Header& hd = *env.header;
+    std::vector<ReplaySet> sets;
+    if (!plan(f, hd, env.shape.templates, sets)) return false;
+    Canvas canvas;
+    if (!start_canvas(f, f.type, hd, *env.renderer, env.live, canvas)) return false;
+
+    FieldStats fs;
+    std::vector<uint8_t> edits;
+    if (f.type == FrameType::Inter && (!f.removed.empty() || !f.motion.empty())) {
+        RangeEncoder enc(edits, &fs);
+        EditCoderState est;
+        Frame copy;
+        copy.removed = f.removed;
+        copy.motion = f.motion;
+        SyntaxError err;
+        code_edits(enc, est, copy, uint32_t(f.removed.size()), ~uint64_t(0), err);
+        enc.finish();
+    }
+    ByteSink head;
+    if (f.type == FrameType::Key) {
+        head.varint(uint32_t(f.added.size()));
+    } else {
+        head.varint(uint32_t(f.removed.size()));
+        head.varint(uint32_t(f.added.size()));
+        head.u8(f.motion.empty() ? 0 : 1);
+        if (!f.motion.empty()) head.u16(f.motion.block_size);
+        head.varint(uint32_t(edits.size()));
+        head.raw(edits.data(), edits.size());
+    }
+    const size_t motion_bytes = f.type == FrameType::Inter ? head.size() : 0;
+    fs[Field::Count] += 8.0 * double(head.size() - edits.size());
+    head.u64(f.replay.seed);
+    head.u8(f.replay.random_orientation ? kRandomOrientation : 0);
+    head.u8(f.replay.color_step);
+    fs[Field::Candidates] += 8.0 * 10;
+    std::vector<uint8_t> stream;
+    {
+        RangeEncoder enc(stream, &fs);
+        SyntaxError err;
+        if (!code_sets(enc, sets, f.replay.seed, f.replay.random_orientation, f.replay.color_step, f.added.size(), hd, env.shape.templates,
+                       *env.renderer, canvas, err))
+            return false;
+        enc.finish();
+    }
+    const size_t start = out.size();
+    out.insert(out.end(), head.bytes().begin(), head.bytes().end());
+    out.insert(out.end(), stream.begin(), stream.end());
+    if (stats) stats->add(fs);
+    if (split) {
+        split->motion_bytes = motion_bytes;
+        split->stroke_bytes = out.size() - start - motion_bytes;
+        split->added = uint32_t(f.added.size());
+        split->removed = uint32_t(f.removed.size());
+    }
+    return true;
+}
+
+Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
+                          BodySplit* split) {
+    if (!ctx.header || !ctx.renderer)
+        return body_error(ctx, Code::InvalidArgument, "coding 2 needs the stream header and a renderer to decode");
+    ByteCursor c(p, n, ctx.offset, ctx.where);
+    uint32_t removed = 0, added = 0, edit_len = 0;
+    uint8_t motion = 0;
+    uint16_t block = 0;
+    if (type == FrameType::Inter) {
+        SPT_TRY(c.varint(removed, "removed_count"));
+        SPT_TRY(c.varint(added, "added_count"));
+        SPT_TRY(c.u8(motion, "motion_present"));
+        if (motion > 1) return c.error(Code::Unsupported, "motion_present " + std::to_string(motion) + " is reserved");
+        if (motion) SPT_TRY(c.u16(block, "block_size"));
+        SPT_TRY(c.varint(edit_len, "edit_length"));
+        SPT_TRY(c.need(edit_len, "edit stream"));
+    } else {
+        SPT_TRY(c.varint(added, "added_count"));
+    }
+    if (ctx.stats) (*ctx.stats)[Field::Count] += 8.0 * double(c.pos());
+    if (type == FrameType::Inter) {
+        DecodeContext ec = ctx;
+        ec.offset = c.offset();
+        SPT_TRY(decode_edit_stream(c.here(), edit_len, removed, motion != 0, block, ec, out));
+        SPT_TRY(c.skip(edit_len, "edit stream"));
+        if (ctx.prev_live != kUnknownLive && ctx.prev_live - removed + added > ctx.limits.max_live_strokes)
+            return c.error(Code::LimitExceeded, "live list would exceed the limit");
+    }
+    const size_t motion_bytes = c.pos();
+    if (added == 0) return c.error(Code::Corrupt, "a coding-2 frame without strokes (such frames use coding 1)");
+    if (added > ctx.limits.max_strokes_per_frame)
+        return c.error(Code::LimitExceeded, std::to_string(added) + " strokes exceed the per-frame limit");
+    uint64_t seed = 0;
+    uint8_t flags = 0;
+    SPT_TRY(c.u64(seed, "seed"));
+    SPT_TRY(c.u8(flags, "replay flags"));
+    if (flags & ~kRandomOrientation) return c.error(Code::Unsupported, "reserved replay flags " + std::to_string(flags));
+    uint8_t step = 0;
+    SPT_TRY(c.u8(step, "colour step"));
+    if (step < 1 || step > kMaxColorStep) return c.error(Code::Corrupt, "colour step " + std::to_string(step) + " is not 1..32");
+    if (ctx.stats) (*ctx.stats)[Field::Candidates] += 8.0 * 10;
+    Canvas canvas;
+    if (auto st = start_canvas(out, type, *ctx.header, *ctx.renderer, ctx.base, canvas); !st)
+        return body_error(ctx, st.error().code, st.error().message);
+    std::vector<ReplaySet> sets(ctx.header->sets.size());
+    RangeDecoder dec(c.here(), c.left(), ctx.stats);
+    SyntaxError err;
+    if (!code_sets(dec, sets, seed, (flags & kRandomOrientation) != 0, step, added, *ctx.header, ctx.shape.templates,
+                   *ctx.renderer, canvas, err))
+        return body_error(ctx, Code::Corrupt, "replayed stroke stream: " + err.msg, c.pos());
+    if (!dec.consumed_all()) return body_error(ctx, Code::Corrupt, "stroke stream has bytes after its last value", c.pos());
+    out.added.clear();
+    out.added.reserve(added);
+    for (auto& s : sets) out.added.insert(out.added.end(), s.strokes.begin(), s.strokes.end());
+    out.replay.present = true;
+    out.replay.seed = seed;
+    out.replay.random_orientation = (flags & kRandomOrientation) != 0;
+    out.replay.color_step = step;
+    out.replay.regions.clear();
+    for (auto& s : sets) out.replay.regions.push_back(std::move(s.region));
+    if (split) {
+        split->motion_bytes = type == FrameType::Inter ? motion_bytes : 0;
+        split->stroke_bytes = n - split->motion_bytes;
+        split->added = added;
+        split->removed = removed;
+    }
+    return {};
+}
+
+}  // namespace spt::detail
