@@ -87,6 +87,28 @@ Status check_stroke(const Stroke& s, const Header& h, size_t templates, const Li
 
 }  // namespace
 
+std::vector<Stroke> canvas_strip_strokes(uint32_t w, uint32_t h, Rgb8 c, uint8_t rect) {
+    // Pixel column w-1 spans Q4 [16(w-1), 16w) horizontally and [0, 16h) vertically.
+    AffineStroke col{rect, int32_t(16 * w - 8), int32_t(8 * h), 8, 0, 0, int32_t(8 * h), {c.r, c.g, c.b, 255}};
+    AffineStroke row{rect, int32_t(8 * (w - 1)), int32_t(16 * h - 8), int32_t(8 * (w - 1)), 0, 0, 8, {c.r, c.g, c.b, 255}};
+    std::vector<Stroke> out{Stroke::make_affine(col)};
+    if (w > 1) out.push_back(Stroke::make_affine(row));
+    return out;
+}
+
+void set_background(Document& doc, Rgb8 c) {
+    const Rgb8 old = doc.info.header.background;
+    doc.info.header.background = c;
+    if (!doc.canvas_strips) return;
+    const Header& h = doc.info.header;
+    for (auto& f : doc.frames)
+        for (auto& s : f.added) {
+            if (s.kind != StrokeKind::Affine) continue;
+            for (const Stroke& strip : canvas_strip_strokes(h.width, h.height, old, s.affine.tmpl))
+                if (s.affine == strip.affine) s.affine.color = {c.r, c.g, c.b, 255};
+        }
+}
+
 Status validate(const Document& doc, const std::string& source, const Limits& lim) {
     const Header& h = doc.info.header;
     if (h.width < 1 || h.height < 1 || h.width > lim.max_width || h.height > lim.max_height ||

@@ -21,10 +21,10 @@ Result<Canvas> render_frame(const Document& doc, size_t frame) {
 Result<Rgb8> fit_background(const Document& doc, const uint8_t* ref) {
     Document d = doc;
     const size_t last = d.frames.size() - 1;
-    d.info.header.background = {0, 0, 0};
+    set_background(d, {0, 0, 0});
     auto black = render_frame(d, last);
     if (!black) return black.error();
-    d.info.header.background = {255, 255, 255};
+    set_background(d, {255, 255, 255});
     auto white = render_frame(d, last);
     if (!white) return white.error();
     double num[3] = {0, 0, 0}, den[3] = {0, 0, 0};

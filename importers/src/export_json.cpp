@@ -98,6 +98,7 @@ std::string export_json(const Document& doc) {
         o += kind_name(t.kind);
         o += "\"";
         if (!t.name.empty()) { o += ", \"name\": "; json::append_string(o, t.name); }
+        if (t.supersample) o += ", \"supersample\": " + std::to_string(t.supersample);
         if (t.kind == TemplateKind::Bitmap)
             o += ", \"width\": " + std::to_string(t.width) + ", \"height\": " + std::to_string(t.height) + ", \"base64\": \"" +
                  base64_encode(t.pixels.data(), t.pixels.size()) + "\"";

@@ -3,6 +3,7 @@
 // index x is centred on the pixel centre x + 0.5 (see importers/README.md for each type).
 #include <cmath>
 
+#include "spt_import/geometrize.hpp"
 #include "spt_import/importer.hpp"
 #include "spt_import/json.hpp"
 #include "spt_import/shapes.hpp"
@@ -109,40 +110,19 @@ Result<Document> load(const std::string& path, std::string_view text, const Impo
 
     auto& out = doc.frames[0].added;
     StrokeSink sink(out, doc.report);
-    const Mat2x3 id;
+    auto renderer = Renderer::create(doc.info.header, doc.info.templates);
+    if (!renderer) return renderer.error();
+    uint64_t differing = 0;
     for (size_t i = first; i < list.size(); ++i) {
         const auto& s = list[i];
         const auto& d = s.d;
         const double o = kHalf;
+        if (s.type <= 32) {  // areas: the affine stroke closest to geometrize's own pixels
+            ++doc.report.shapes;
+            geometrize::append_shape(**renderer, s.type, d, s.c, W, H, out, doc.report, differing);
+            continue;
+        }
         switch (s.type) {
-            case 1: {  // x1, y1, x2, y2: pixel rows/columns x1..x2, y1..y2 inclusive
-                ++doc.report.shapes;
-                const double x0 = std::min(d[0], d[2]), x1 = std::max(d[0], d[2]), y0 = std::min(d[1], d[3]), y1 = std::max(d[1], d[3]);
-                sink.rect(id, x0, y0, x1 - x0 + 1, y1 - y0 + 1, s.c);
-                break;
-            }
-            case 2: {  // x1, y1, x2, y2, angle: the box rotated about its centre
-                ++doc.report.shapes;
-                const double cx = (d[0] + d[2]) / 2 + o, cy = (d[1] + d[3]) / 2 + o;
-                const double w = std::fabs(d[2] - d[0]), h = std::fabs(d[3] - d[1]);
-                sink.affine(1, Mat2x3::translate(cx, cy) * Mat2x3::rotate_deg(d[4]) * Mat2x3::scale(w / 2, h / 2), s.c);
-                break;
-            }
-            case 4:
-                sink.polygon({{d[0] + o, d[1] + o}, {d[2] + o, d[3] + o}, {d[4] + o, d[5] + o}}, s.c);
-                break;
-            case 8:  // x, y, rx, ry
-                ++doc.report.shapes;
-                sink.ellipse(id, d[0] + o, d[1] + o, d[2], d[3], s.c);
-                break;
-            case 16:  // x, y, rx, ry, angle
-                ++doc.report.shapes;
-                sink.affine(0, Mat2x3::translate(d[0] + o, d[1] + o) * Mat2x3::rotate_deg(d[4]) * Mat2x3::scale(d[2], d[3]), s.c);
-                break;
-            case 32:  // x, y, r
-                ++doc.report.shapes;
-                sink.ellipse(id, d[0] + o, d[1] + o, d[2], d[2], s.c);
-                break;
             case 64:  // x1, y1, x2, y2: a one-pixel line
                 sink.polyline({{d[0] + o, d[1] + o}, {d[2] + o, d[3] + o}}, 1.0, s.c);
                 break;
@@ -166,6 +146,12 @@ Result<Document> load(const std::string& path, std::string_view text, const Impo
         }
         if (s.type >= 64) doc.report.note("lines drawn 1 px wide with round caps (geometrize draws aliased 1 px lines)");
     }
+    if (differing)
+        doc.report.note("geometrize's scanline rasterisation reproduced by fitted affine strokes; " + std::to_string(differing) +
+                        " shape pixels differ from it");
+    // geometrize never paints the last row and column: put the canvas colour back there.
+    for (const Stroke& st : canvas_strip_strokes(W, H, doc.info.header.background, 1)) out.push_back(st);
+    doc.canvas_strips = true;
     if (Status st = validate(doc, path, opts.limits); !st) return st.error();
     return doc;
 }

@@ -255,6 +255,15 @@ bool read_templates(const Ctx& c, const Value* tv, std::vector<Template>& T, Err
             if (n->text.size() > 255) { e = c.err(*n, where + ".name longer than 255 bytes"); return false; }
             out.name = n->text;
         }
+        if (const Value* ss = t.find("supersample")) {  // analytic kinds: 0 or 2..16 (SPEC.md 3.2)
+            int64_t n;
+            if (!c.integer(*ss, where + ".supersample", 0, 16, n, e)) return false;
+            if (n == 1 || (n && out.kind == TemplateKind::Bitmap)) {
+                e = c.err(*ss, where + ".supersample must be 0 or 2..16, and 0 for bitmaps");
+                return false;
+            }
+            out.supersample = uint8_t(n);
+        }
         if (out.kind == TemplateKind::Bitmap) {
             int64_t w, h;
             const Value* f;

@@ -149,6 +149,7 @@ Result<Document> import_path(const std::string& path, const std::string& from, c
         }
         lists.push_back(std::move(doc->frames[0].added));
         out.report.merge(doc->report);
+        out.canvas_strips = out.canvas_strips || doc->canvas_strips;
     }
     out.frames = frames_from_lists(lists);
     out.info.header.frame_count = uint32_t(out.frames.size());

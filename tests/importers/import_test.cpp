@@ -9,6 +9,7 @@
 #include "spt/reader.hpp"
 #include "spt_import/codec.hpp"
 #include "spt_import/export.hpp"
+#include "spt_import/evaluate.hpp"
 #include "spt_import/importer.hpp"
 
 using namespace spt;
@@ -142,9 +143,43 @@ TEST(ImportGeometrize, ShapesTypesAndBackground) {
     EXPECT_EQ(d->info.header.background, (Rgb8{9, 8, 7}));
     EXPECT_TRUE(d->report.background_stated);
     const auto& s = d->frames[0].added;
-    ASSERT_GE(s.size(), 5u);
+    ASSERT_GE(s.size(), 7u);
     EXPECT_EQ(s[0].kind, StrokeKind::Affine);
-    EXPECT_EQ(s.back().kind, StrokeKind::Curve);
+    // The polyline, then the two canvas-coloured strips geometrize never paints over.
+    EXPECT_EQ(s[s.size() - 3].kind, StrokeKind::Curve);
+    EXPECT_TRUE(d->canvas_strips);
+    for (size_t k = s.size() - 2; k < s.size(); ++k) {
+        ASSERT_EQ(s[k].kind, StrokeKind::Affine);
+        EXPECT_EQ(s[k].affine.color, (Rgba8{9, 8, 7, 255}));
+    }
+    // set_background recolours the strips with the canvas.
+    import::Document d2 = *d;
+    import::set_background(d2, {1, 2, 3});
+    EXPECT_EQ(d2.frames[0].added.back().affine.color, (Rgba8{1, 2, 3, 255}));
+}
+
+// The fitted strokes paint exactly geometrize's pixels for circles and rectangles (its
+// rasteriser, re-derived in geometrize_raster.cpp and checked against its PNGs by the media test).
+TEST(ImportGeometrize, StrokesPaintGeometrizesPixels) {
+    const char* js =
+        "{\"shapes\":[{\"type\":1, \"data\":[0,0,39,29],\"color\":[0,0,0,255]},\n"
+        "{\"type\":32, \"data\":[17,14,9],\"color\":[255,255,255,255]},\n"
+        "{\"type\":1, \"data\":[30,3,36,8],\"color\":[255,255,255,255]}]}";
+    auto d = import_text("g3.json", js);
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    auto c = import::render_frame(*d, 0);
+    ASSERT_TRUE(c.ok());
+    size_t white = 0;
+    for (uint32_t y = 0; y < 30; ++y)
+        for (uint32_t x = 0; x < 40; ++x) {
+            const int dx = int(x) - 17, dy = int(y) - 14;
+            const bool in_circle = dx * dx + dy * dy <= 81;
+            const bool in_rect = x >= 30 && x <= 36 && y >= 3 && y < 8;  // rows y1 .. y2 - 1
+            const bool w = c->rgb[(size_t(y) * 40 + x) * 3] == 255;
+            EXPECT_EQ(w, in_circle || in_rect) << x << "," << y;
+            white += w;
+        }
+    EXPECT_GT(white, 200u);
 }
 
 TEST(ImportGeometrize, NeedsCanvasSizeWithoutBackground) {

@@ -97,7 +97,7 @@ int cmd_import(int argc, char** argv) {
     if (ref && !doc->report.background_stated && !opts.background) {
         auto bg = import::fit_background(*doc, ref->rgb.data());
         if (!bg) { std::fprintf(stderr, "spt import: %s\n", bg.error().message.c_str()); return 1; }
-        doc->info.header.background = *bg;
+        import::set_background(*doc, *bg);
         fitted = true;
     }
     // Provenance for foreign sources; a JSON stroke list keeps its own metadata, so that

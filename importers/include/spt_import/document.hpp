@@ -31,7 +31,16 @@ struct Document {
     StreamInfo info;
     std::vector<Frame> frames;  // as stored: key frames and inter frames
     ImportReport report;
+    // Strokes painted in the canvas colour (geometrize never paints the last row and column:
+    // opaque rectangles put the canvas colour back there). set_background() recolours them.
+    bool canvas_strips = false;
 };
+
+// The two opaque rectangles (last column, then last row without its last pixel) that paint
+// the canvas colour back where geometrize never draws.
+std::vector<Stroke> canvas_strip_strokes(uint32_t width, uint32_t height, Rgb8 colour, uint8_t rectangle_template);
+// Sets the canvas colour, and the colour of the canvas strips when the document has them.
+void set_background(Document& doc, Rgb8 colour);
 
 // The templates used when a source names none: ellipse, rectangle, triangle (ids 0, 1, 2).
 std::vector<Template> default_templates();

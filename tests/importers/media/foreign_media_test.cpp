@@ -16,16 +16,16 @@ namespace {
 struct Sample { const char* file; const char* png; double floor_db; };
 
 const Sample kSamples[] = {
-    {"coffee-primitive-ellipses.svg", "coffee-primitive-ellipses.png", 35.5},
-    {"coffee-primitive-triangles.svg", "coffee-primitive-triangles.png", 33.5},
-    {"coffee-geometrize-circles.svg", "coffee-geometrize-circles.png", 26.5},
-    {"coffee-geometrize-triangles.svg", "coffee-geometrize-triangles.png", 26.5},
-    {"coffee-geometrize-rotellipses.svg", "coffee-geometrize-rotellipses.png", 27.0},
-    {"coffee-geometrize-rotrects.svg", "coffee-geometrize-rotrects.png", 27.0},
-    {"coffee-geometrize-circles.json", "coffee-geometrize-circles.png", 31.0},
-    {"coffee-geometrize-triangles.json", "coffee-geometrize-triangles.png", 27.0},
-    {"coffee-geometrize-rotellipses.json", "coffee-geometrize-rotellipses.png", 25.5},
-    {"coffee-geometrize-rotrects.json", "coffee-geometrize-rotrects.png", 25.5},
+    {"coffee-primitive-ellipses.svg", "coffee-primitive-ellipses.png", 47.5},
+    {"coffee-primitive-triangles.svg", "coffee-primitive-triangles.png", 48.5},
+    {"coffee-geometrize-circles.svg", "coffee-geometrize-circles.png", 48.0},
+    {"coffee-geometrize-triangles.svg", "coffee-geometrize-triangles.png", 40.0},
+    {"coffee-geometrize-rotellipses.svg", "coffee-geometrize-rotellipses.png", 34.0},
+    {"coffee-geometrize-rotrects.svg", "coffee-geometrize-rotrects.png", 44.0},
+    {"coffee-geometrize-circles.json", "coffee-geometrize-circles.png", 48.0},
+    {"coffee-geometrize-triangles.json", "coffee-geometrize-triangles.png", 40.0},
+    {"coffee-geometrize-rotellipses.json", "coffee-geometrize-rotellipses.png", 34.0},
+    {"coffee-geometrize-rotrects.json", "coffee-geometrize-rotrects.png", 44.0},
 };
 
 }  // namespace
@@ -46,7 +46,7 @@ TEST_P(ForeignMedia, ImportRendersCloseToTheToolsOwnPng) {
     if (!doc->report.background_stated) {
         auto bg = import::fit_background(*doc, ref->rgb.data());
         ASSERT_TRUE(bg.ok());
-        doc->info.header.background = *bg;
+        import::set_background(*doc, *bg);
     }
     auto canvas = import::render_frame(*doc, 0);
     ASSERT_TRUE(canvas.ok()) << canvas.error().message;
