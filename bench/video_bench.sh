@@ -89,6 +89,9 @@ clip() {  # name input [extra args]
 
 if want clips; then
   clip city "$media/video/city.mpg" --width 640 --frames "0-$last"
+  # The quality setting: lower rate-distortion lambda, repaint at a lower error, more strokes.
+  clip city_q "$media/video/city.mpg" --width 640 --frames "0-$last" --lambda 8 --repaint-error 10 \
+    --max-inter-strokes 8000
   clip butterfly "$media/video/butterfly-cartoon.avi" --width 640 --frames "0-$last"
   clip earth "$media/exr/earth/earth.####.exr" --width 640
   clip city720 "$media/video/city.mpg" --width 1280 --frames "0-$((frames / 3))"
@@ -136,7 +139,29 @@ for codec in x265 aom; do
 done
 # Side by side (source | painting | x265 | AV1), frame 30, a 200x150 crop.
 mid=$((frames / 2))
-crop="crop=200:150:160:110"
+# The crop: the 200x150 window of the source frame with the most detail (sum of luminance
+# gradients), so the comparison shows lines and texture rather than flat background.
+crop=$(python3 - "$work/cartoon_src.rgb" "$mid" <<'PY'
+import sys
+w, h, cw, ch = 520, 380, 200, 150
+with open(sys.argv[1], 'rb') as f:
+    f.seek(int(sys.argv[2]) * w * h * 3)
+    px = f.read(w * h * 3)
+lum = [(px[3*i] * 299 + px[3*i+1] * 587 + px[3*i+2] * 114) // 1000 for i in range(w * h)]
+g = [[0] * (w + 1) for _ in range(h + 1)]  # integral image of |dx| + |dy|
+for y in range(h):
+    row, acc = g[y + 1], 0
+    for x in range(w):
+        i = y * w + x
+        d = (abs(lum[i] - lum[i + 1]) if x + 1 < w else 0) + (abs(lum[i] - lum[i + w]) if y + 1 < h else 0)
+        acc += d
+        row[x + 1] = g[y][x + 1] + acc
+best = max(((g[y + ch][x + cw] - g[y][x + cw] - g[y + ch][x] + g[y][x], x, y)
+            for y in range(0, h - ch + 1, 10) for x in range(0, w - cw + 1, 10)))
+print(f"crop={cw}:{ch}:{best[1]}:{best[2]}")
+PY
+)
+echo "side-by-side crop (most detailed window of frame $mid): $crop"
 ffmpeg -loglevel error -y "${raw_in[@]}" -i "$work/cartoon_src.rgb" "${raw_in[@]}" -i "$work/cartoon_paint.rgb" \
   -i "$work/cartoon_x265.mkv" -i "$work/cartoon_aom.mkv" \
   -lavfi "[0:v]select=eq(n\,$mid),$crop[a];[1:v]select=eq(n\,$mid),$crop[b];[2:v]select=eq(n\,$mid),$crop[c];[3:v]select=eq(n\,$mid),$crop,format=rgb24[d];[a][b][c][d]hstack=4" \

@@ -43,6 +43,15 @@ int main(int argc, char** argv) {
         else if (k == "--max-inter-strokes") o.max_inter_strokes = std::strtoull(v.c_str(), nullptr, 10);
         else if (k == "--repaint-error") o.repaint_error = std::atof(v.c_str());
         else if (k == "--target-psnr") o.paint.target_psnr = std::atof(v.c_str());
+        else if (k == "--flow-width") o.flow_width = std::atoi(v.c_str());
+        else if (k == "--orient-refresh") o.orient_refresh = std::atoi(v.c_str());
+        else if (k == "--flow-orientation") o.flow_orientation = std::atoi(v.c_str()) != 0;
+        else if (k == "--cull-every") o.cull_every = std::atoi(v.c_str());
+        else if (k == "--repaint-key-fraction") o.repaint_key_fraction = std::atof(v.c_str());
+        else if (k == "--inter-threshold") o.inter_threshold = std::atof(v.c_str());
+        else if (k == "--incremental") o.incremental_render = std::atoi(v.c_str()) != 0;
+        else if (k == "--lambda") o.paint.lambda = std::atof(v.c_str());
+        else if (k == "--temperature") o.paint.temperature = std::atof(v.c_str());
         else if (k == "--flow") { if (!parse_flow_method(v, o.flow)) return 2; }
         else if (k == "--block") o.block_size = std::atoi(v.c_str());
         else if (k == "--sets") o.sets = std::atoi(v.c_str());
@@ -71,7 +80,7 @@ int main(int argc, char** argv) {
     FILE* fs = raw_src.empty() ? nullptr : std::fopen(raw_src.c_str(), "wb");
     FILE* fp = raw_paint.empty() ? nullptr : std::fopen(raw_paint.c_str(), "wb");
     std::printf("# %ux%u %u/%u fps\n", f.image.width, f.image.height, fps.num, fps.den);
-    std::printf("index,source,type,cut,added,removed,live,bytes,seconds,psnr,repaint,flow,render,paint,cull\n");
+    std::printf("index,source,type,cut,added,removed,live,bytes,seconds,psnr,repaint,flow,render,paint,cull,orient\n");
     uint64_t bytes_before = (*enc)->bytes_written();
     uint64_t key_bytes = 0, inter_bytes = 0;
     for (;;) {
@@ -81,9 +90,9 @@ int main(int argc, char** argv) {
         const uint64_t fb = now - bytes_before;
         bytes_before = now;
         (r->type == FrameType::Key ? key_bytes : inter_bytes) += fb;
-        std::printf("%u,%ld,%s,%d,%u,%u,%u,%llu,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f\n", r->index, r->source_number,
+        std::printf("%u,%ld,%s,%d,%u,%u,%u,%llu,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f\n", r->index, r->source_number,
                     r->type == FrameType::Key ? "key" : "inter", int(r->cut), r->added, r->removed, r->live,
-                    (unsigned long long)fb, r->seconds, r->psnr, r->repaint_fraction, r->seconds_flow, r->seconds_render, r->seconds_paint, r->seconds_cull);
+                    (unsigned long long)fb, r->seconds, r->psnr, r->repaint_fraction, r->seconds_flow, r->seconds_render, r->seconds_paint, r->seconds_cull, r->seconds_orient);
         std::fflush(stdout);
         if (fs) std::fwrite(f.image.rgb.data(), 1, f.image.rgb.size(), fs);
         if (fp) std::fwrite((*enc)->canvas().rgb.data(), 1, (*enc)->canvas().rgb.size(), fp);

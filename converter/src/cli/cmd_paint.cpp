@@ -14,6 +14,7 @@
 #include "io/sequence.hpp"
 #include "io/template_loader.hpp"
 #include "paint/painter.hpp"
+#include "paint/rate_control.hpp"
 #include "spt/render.hpp"
 #include "spt/version.hpp"
 #include "spt/writer.hpp"
@@ -49,6 +50,7 @@ int paint_sequence(const PaintCommandOptions& o) {
     if (!video::parse_flow_method(o.flow, v.flow))
         return fail("--flow: unknown method '" + o.flow + "' (dis-ultrafast, dis-fast, dis-medium, farneback)");
     v.block_size = o.block_size;
+    v.flow_orientation = o.flow_orientation;
     v.max_inter_strokes = o.max_inter_strokes;
     v.paint = o.paint;
     v.paint.rois.clear();  // --roi rectangles apply to every frame; --roi-file ones per frame range
@@ -73,6 +75,15 @@ Status write_side_by_side(const std::string& path, const io::Image& src, const C
         std::copy_n(painted.row(y), size_t(w) * 3, both.data() + (size_t(y) * 2 * w + w) * 3);
     }
     return io::write_image(path, 2 * w, h, both.data());
+}
+
+std::vector<std::pair<std::string, std::string>> still_metadata(const PaintCommandOptions& o) {
+    return {
+        {"software", std::string("spt ") + library_version()},
+        {"source", std::filesystem::path(o.input).filename().string()},
+        {"painter.seed", std::to_string(o.paint.seed)},
+        {"painter.options", o.canonical()},
+    };
 }
 
 int paint_still(const PaintCommandOptions& o) {
@@ -116,6 +127,40 @@ int paint_still(const PaintCommandOptions& o) {
     auto renderer = Renderer::create(setup.header, setup.templates);
     if (!renderer) return fail("cannot set up the renderer: " + renderer.error().message);
 
+    info.header = setup.header;
+    info.templates = setup.templates;
+    info.metadata = still_metadata(o);
+    WriterOptions wo;
+    wo.coding = o.stored ? Coding::Stored : o.coding == 1 ? Coding::Range : Coding::Replay;
+    const paint::ImageView model0{W, H, img->rgb.data()};
+    if (o.target_bytes > 0) {
+        // Rate control (paint/rate_control.hpp): full paints at searched lambdas, each coded to
+        // a scratch file beside the output to measure its exact size.
+        const std::string scratch = o.output + ".rate-search";
+        auto trial = [&](double lambda) {
+            paint::PaintOptions tp = po;
+            tp.lambda = lambda;
+            tp.target_psnr = 0;
+            Canvas c(W, H, o.background);
+            std::vector<Stroke> out;
+            const paint::PaintStats ts = paint::paint(model0, c, **renderer, setup, tp, out);
+            paint::RatePoint p{lambda, ~uint64_t(0), ts.psnr};
+            auto w = Writer::create(scratch, info, wo);
+            if (!w) return p;
+            Frame f;
+            f.added = std::move(out);
+            f.replay = paint::replay_info(setup, tp, W, H);
+            if ((*w)->append(f) && (*w)->finish()) p.bytes = (*w)->stats().total_bytes;
+            std::filesystem::remove(scratch);
+            return p;
+        };
+        const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes);
+        po.lambda = best.lambda;
+        std::fprintf(stderr, "spt paint: --target-bytes %llu: lambda %.4g gives %llu bytes (%+.1f%%), %.2f dB\n",
+                     (unsigned long long)o.target_bytes, best.lambda, (unsigned long long)best.bytes,
+                     100.0 * (double(best.bytes) - double(o.target_bytes)) / double(o.target_bytes), best.psnr);
+    }
+
     Canvas canvas(W, H, o.background);
     std::vector<Stroke> strokes;
     PaintProgress progress(o.progress, po.max_strokes, po.target_psnr, int(setup.header.sets.size()));
@@ -125,16 +170,6 @@ int paint_still(const PaintCommandOptions& o) {
         [&](uint64_t n, int set, double db) { progress.update(n, set, db); return true; });
     const double paint_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    info.header = setup.header;
-    info.templates = setup.templates;
-    info.metadata = {
-        {"software", std::string("spt ") + library_version()},
-        {"source", std::filesystem::path(o.input).filename().string()},
-        {"painter.seed", std::to_string(o.paint.seed)},
-        {"painter.options", o.canonical()},
-    };
-    WriterOptions wo;
-    wo.coding = o.stored ? Coding::Stored : Coding::Range;
     auto writer = Writer::create(o.output, info, wo);
     if (!writer) {
         progress.finish(false, st.strokes, st.psnr, writer.error().message);
@@ -144,6 +179,7 @@ int paint_still(const PaintCommandOptions& o) {
     frame.index = 0;
     frame.type = FrameType::Key;
     frame.added = std::move(strokes);
+    frame.replay = paint::replay_info(setup, po, W, H);  // coding 2 replays the painter's candidates
     Status s = (*writer)->append(frame);
     if (s) s = (*writer)->finish();
     if (!s) {

@@ -143,6 +143,12 @@ void print_paint_help(std::FILE* f) {
         "  --side-by-side FILE    also write source | painting in one image\n"
         "  --background R,G,B     canvas colour before any stroke (default 255,255,255)\n"
         "  --stored               write stored (coding 0) frames instead of range-coded ones\n"
+        "  --coding 1|2           2 (default): code which of the painter's replayable random\n"
+        "                         candidates were accepted (SPEC.md 7.7); 1: explicit positions\n"
+        "  --color-step Q         choose colours on a lattice of step Q (1..32, default 4) around\n"
+        "                         the canvas under the stroke: coding 2 spends fewer bits on them\n"
+        "  --target-bytes N[/s]   search lambda so that the file is at most N bytes (N/s: per\n"
+        "                         second of a clip); reports where it landed"
         "\n"
         "sequences and video:\n"
         "  --frames A-B           paint only these frames (sequence numbers, or 0-based video\n"
@@ -157,6 +163,8 @@ void print_paint_help(std::FILE* f) {
         "                         farneback\n"
         "  --max-inter-strokes N  at most N new strokes per inter frame (default 4000)\n"
         "  --motion-block N       motion block size in pixels, 8..256 (default 16)\n"
+        "  --flow-orientation     lay new strokes along the optical flow where the picture\n"
+        "                         moves (default: along the edges, as for key frames)\n"
         "  --roi-file F           for video, each ROI may have \"frames\": \"A-B\"\n"
         "  Ctrl-C / SIGTERM stops after the current frame and leaves a valid OUT.spt holding\n"
         "  every finished frame.\n"
@@ -169,6 +177,7 @@ void print_paint_help(std::FILE* f) {
 
 ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, std::string& err) {
     bool have_sets = false;
+    o.paint.color_step = 4;  // measured: ~6 bits a stroke less in coding 2 at the same PSNR (bench/rate_bench.sh)
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&](std::string& v) -> bool {
@@ -245,6 +254,24 @@ ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, s
             if (!parse_rgb(v, o.background)) { err = "--background: expected R,G,B (0..255), got '" + v + "'"; return ParseResult::Error; }
         } else if (a == "--stored") {
             o.stored = true;
+        } else if (a == "--coding") {
+            if (!value(v)) return ParseResult::Error;
+            if (v != "1" && v != "2") { err = "--coding: expected 1 or 2, got '" + v + "'"; return ParseResult::Error; }
+            o.coding = v == "1" ? 1 : 2;
+        } else if (a == "--color-step") {
+            long n;
+            if (!value(v)) return ParseResult::Error;
+            if (!parse_int(v, 1, 32, n)) { err = "--color-step: expected 1..32, got '" + v + "'"; return ParseResult::Error; }
+            o.paint.color_step = int(n);
+        } else if (a == "--target-bytes") {
+            if (!value(v)) return ParseResult::Error;
+            std::string num = v;
+            o.target_bytes_per_second = num.size() > 2 && num.compare(num.size() - 2, 2, "/s") == 0;
+            if (o.target_bytes_per_second) num.resize(num.size() - 2);
+            if (!parse_u64(num, o.target_bytes) || o.target_bytes < 64) {
+                err = "--target-bytes: expected a size of at least 64 bytes, optionally /s, got '" + v + "'";
+                return ParseResult::Error;
+            }
         } else if (a == "--frames") {
             if (!value(o.frames)) return ParseResult::Error;
         } else if (a == "--fps") {
@@ -264,6 +291,8 @@ ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, s
         } else if (a == "--max-inter-strokes") {
             if (!value(v)) return ParseResult::Error;
             if (!parse_u64(v, o.max_inter_strokes) || o.max_inter_strokes > (1u << 24)) { err = "--max-inter-strokes: expected 0..16777216, got '" + v + "'"; return ParseResult::Error; }
+        } else if (a == "--flow-orientation") {
+            o.flow_orientation = true;
         } else if (a == "--motion-block") {
             long n;
             if (!value(v)) return ParseResult::Error;
@@ -298,7 +327,7 @@ std::string PaintCommandOptions::canonical() const {
     else
         for (size_t i = 0; i < set_sizes.size(); ++i) s << (i ? "," : "") << set_sizes[i].width << 'x' << set_sizes[i].height;
     s << " max-strokes=" << paint.max_strokes << " target-psnr=" << paint.target_psnr
-      << " threshold=" << paint.threshold << " lambda=" << paint.lambda << " temperature=" << paint.temperature
+      << " threshold=" << paint.threshold << " lambda=" << paint.lambda << " color-step=" << paint.color_step << " temperature=" << paint.temperature
       << " orient=" << orient_name(paint.orient) << " templates=" << (templates_dir.empty() ? "builtin" : "custom")
       << " background=" << int(background.r) << ',' << int(background.g) << ',' << int(background.b)
       << " rois=" << rois.size();

@@ -34,6 +34,9 @@ struct PaintCommandOptions {
     std::string side_by_side;             // --side-by-side OUT.png
     Rgb8 background{255, 255, 255};
     bool stored = false;                  // --stored: coding 0 frames
+    int coding = 2;                       // --coding 1|2: range coding, or replayed candidates
+    uint64_t target_bytes = 0;            // --target-bytes N[/s]: 0 = none
+    bool target_bytes_per_second = false; // N/s: per second of a clip
     size_t cli_roi_count = 0;             // rois[0..cli_roi_count) came from --roi (all frames)
 
     // Sequences and video (ignored for a still image).
@@ -45,6 +48,7 @@ struct PaintCommandOptions {
     std::string flow = "dis-ultrafast";   // --flow
     uint64_t max_inter_strokes = 4000;    // --max-inter-strokes N
     int block_size = 16;                  // --motion-block N
+    bool flow_orientation = false;        // --flow-orientation: new strokes along the motion
 
     // The options that shape the painting, canonically spelt (for the painter.options metadata):
     // no paths and no thread count, so that the file bytes do not depend on them.

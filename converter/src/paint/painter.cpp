@@ -19,35 +19,34 @@ namespace spt::paint {
 
 namespace {
 
-// Where candidates may be centred: every pixel, or a list of allowed pixel indices.
+// Where candidates may be centred: the generator's candidate domain (SPEC.md 7.7.2), so that
+// a decoder can replay the draws, plus a pixel mask for measuring the domain's error.
 struct Domain {
     bool all = true;
     uint64_t total = 0;             // number of pixels a candidate can land on
-    std::vector<uint32_t> pixels;   // when !all
+    replay::CandidateDomain cd;
+    std::vector<uint8_t> in;        // when !all: 1 where a candidate can land
+    uint32_t width = 0;
     uint32_t pick(uint64_t r) const {
-        const uint64_t k = rng_below(r, total);
-        return all ? uint32_t(k) : pixels[k];
+        uint32_t x, y;
+        cd.pixel(rng_below(r, total), x, y);
+        return y * width + x;
     }
 };
 
-Domain make_domain(uint32_t w, uint32_t h, const std::vector<uint8_t>* region, const std::vector<Rect>* rects) {
+Domain make_domain(uint32_t w, uint32_t h, const ReplayRegion& region) {
     Domain d;
-    if (!region && !rects) {
-        d.total = uint64_t(w) * h;
-        return d;
+    d.width = w;
+    d.cd = replay::CandidateDomain(w, h, region);
+    d.total = d.cd.size();
+    d.all = !region.use_rects && !region.use_blocks;
+    if (d.all) return d;
+    d.in.assign(size_t(w) * h, 0);
+    for (uint64_t k = 0; k < d.total; ++k) {
+        uint32_t x, y;
+        d.cd.pixel(k, x, y);
+        d.in[size_t(y) * w + x] = 1;
     }
-    d.all = false;
-    std::vector<uint8_t> in(size_t(w) * h, rects ? 0 : 1);
-    if (rects)
-        for (const Rect& r : *rects) {
-            const int64_t x0 = std::max<int64_t>(0, r.x), y0 = std::max<int64_t>(0, r.y);
-            const int64_t x1 = std::min<int64_t>(w, int64_t(r.x) + r.w), y1 = std::min<int64_t>(h, int64_t(r.y) + r.h);
-            for (int64_t y = y0; y < y1; ++y)
-                for (int64_t x = x0; x < x1; ++x) in[size_t(y) * w + size_t(x)] = 1;
-        }
-    for (size_t i = 0; i < in.size(); ++i)
-        if (in[i] && (!region || (*region)[i])) d.pixels.push_back(uint32_t(i));
-    d.total = d.pixels.size();
     return d;
 }
 
@@ -64,7 +63,8 @@ int64_t sse_over(const Plane& p, const Domain& d) {
     if (d.all)
         for (size_t i = 0; i < size_t(p.width) * p.height; ++i) e += px_err(i);
     else
-        for (uint32_t i : d.pixels) e += px_err(i);
+        for (size_t i = 0; i < d.in.size(); ++i)
+            if (d.in[i]) e += px_err(i);
     return e;
 }
 
@@ -93,7 +93,7 @@ constexpr int32_t kRowsPerTask = 8;
 
 // Scores one big candidate with its rows spread over the pool. Integer partial sums make the
 // result independent of how the rows were split.
-StampScore score_split(WorkerPool& pool, const Plane& p, const Footprint& f, int32_t px, int32_t py) {
+StampScore score_split(WorkerPool& pool, const Plane& p, const Footprint& f, int32_t px, int32_t py, int step) {
     StampScore s;
     const int32_t h = int32_t(f.mask->h);
     const size_t tasks = size_t((h + kRowsPerTask - 1) / kRowsPerTask);
@@ -104,7 +104,7 @@ StampScore score_split(WorkerPool& pool, const Plane& p, const Footprint& f, int
     });
     ColourSums all;
     for (const auto& c : part) all.add(c);
-    if (!best_colour(all, s.color)) return s;
+    if (!best_colour(all, s.color, step)) return s;
     std::vector<int64_t> err(tasks, 0);
     pool.run(tasks, [&](size_t t) {
         err[t] = new_error(p, *f.mask, f.spans, px, py, int32_t(t) * kRowsPerTask,
@@ -153,6 +153,47 @@ private:
 
 }  // namespace
 
+ReplayInfo replay_info(const PaintSetup& setup, const PaintOptions& opts, uint32_t width, uint32_t height,
+                       const std::vector<uint8_t>* region) {
+    ReplayInfo ri;
+    ri.present = true;
+    ri.seed = opts.seed;
+    ri.random_orientation = opts.orient == OrientMode::Random;
+    ri.color_step = uint8_t(std::clamp(opts.color_step, 1, 32));
+    ReplayRegion base;
+    if (region && region->size() == size_t(width) * height) {
+        // A repaint mask becomes the blocks it touches: a block mask codes in a few bits per
+        // block, a pixel mask would cost more than the strokes it allows.
+        base.use_blocks = true;
+        base.block_size = kRegionBlock;
+        const uint32_t cols = (width + kRegionBlock - 1) / kRegionBlock, rows = (height + kRegionBlock - 1) / kRegionBlock;
+        base.blocks.assign(size_t(cols) * rows, 0);
+        for (uint32_t y = 0; y < height; ++y)
+            for (uint32_t x = 0; x < width; ++x)
+                if ((*region)[size_t(y) * width + x]) base.blocks[size_t(y / kRegionBlock) * cols + x / kRegionBlock] = 1;
+    }
+    ri.regions.assign(setup.header.sets.size(), base);
+    if (!opts.rois.empty() && !ri.regions.empty()) {
+        ReplayRegion& last = ri.regions.back();
+        last.use_rects = true;
+        for (const Rect& r : opts.rois) {
+            const int64_t x0 = std::max<int64_t>(0, r.x), y0 = std::max<int64_t>(0, r.y);
+            const int64_t x1 = std::min<int64_t>(width, int64_t(r.x) + r.w), y1 = std::min<int64_t>(height, int64_t(r.y) + r.h);
+            if (x0 < x1 && y0 < y1 && last.rects.size() < 4096)
+                last.rects.push_back({uint32_t(x0), uint32_t(y0), uint32_t(x1 - x0), uint32_t(y1 - y0)});
+        }
+        // No rectangle on the canvas: an empty domain (a 1x1 rectangle in an empty block mask
+        // cannot be expressed, so the set is skipped by giving it an all-zero mask).
+        if (last.rects.empty()) {
+            last.use_rects = false;
+            last.use_blocks = true;
+            last.block_size = kRegionBlock;
+            last.blocks.assign(size_t((width + kRegionBlock - 1) / kRegionBlock) * ((height + kRegionBlock - 1) / kRegionBlock), 0);
+        }
+    }
+    return ri;
+}
+
 PaintStats paint(const ImageView& model, Canvas& canvas, const Renderer& renderer,
                  const PaintSetup& setup, const PaintOptions& opts, std::vector<Stroke>& out,
                  const std::vector<uint8_t>* region, const PaintProgressFn& progress) {
@@ -165,17 +206,27 @@ PaintStats paint(const ImageView& model, Canvas& canvas, const Renderer& rendere
         (region && region->size() != size_t(W) * H))
         return st;
 
+    const int step = std::clamp(opts.color_step, 1, 32);
     int threads = opts.threads > 0 ? opts.threads : int(std::thread::hardware_concurrency());
     WorkerPool pool(std::max(1, threads));
     const Plane plane{W, H, model.rgb, canvas.rgb.data()};
     const double samples = 3.0 * W * H;
-    const std::vector<uint8_t> field = orientation_field(model, hd.orientations, opts.orient);
+    // A caller's field is used when it fits (right size, valid indices); otherwise our own.
+    const std::vector<uint8_t>* given = opts.orient == OrientMode::Random ? nullptr : opts.orientation_field;
+    if (given && (given->size() != size_t(W) * H ||
+                  std::any_of(given->begin(), given->end(), [&](uint8_t o) { return o >= O; })))
+        given = nullptr;
+    const std::vector<uint8_t> own = given ? std::vector<uint8_t>{} : orientation_field(model, hd.orientations, opts.orient);
+    const std::vector<uint8_t>& field = given ? *given : own;
 
-    const Domain base = make_domain(W, H, region, nullptr);
+    const ReplayInfo ri = replay_info(setup, opts, W, H, region);
+    const Domain base = make_domain(W, H, ri.regions.empty() ? ReplayRegion{} : ri.regions.front());
     Domain roi_domain;
-    if (!opts.rois.empty()) roi_domain = make_domain(W, H, region, &opts.rois);
+    if (!opts.rois.empty()) roi_domain = make_domain(W, H, ri.regions.back());
 
-    int64_t err = sse_over(plane, Domain{true, uint64_t(W) * H, {}});
+    Domain whole;
+    whole.total = uint64_t(W) * H;
+    int64_t err = sse_over(plane, whole);
     TileMarks marks(W, H);
     std::vector<Candidate> batch;
     bool stop = false;
@@ -230,19 +281,19 @@ PaintStats paint(const ImageView& model, Canvas& canvas, const Renderer& rendere
             if (split) {
                 for (size_t i = 0; i < bsize; ++i) {
                     draw(i);
-                    batch[i].score = score_split(pool, plane, *batch[i].fp, batch[i].px, batch[i].py);
+                    batch[i].score = score_split(pool, plane, *batch[i].fp, batch[i].px, batch[i].py, step);
                 }
             } else {
                 pool.run(bsize, [&](size_t i) {
                     draw(i);
-                    batch[i].score = score_stamp(plane, *batch[i].fp->mask, batch[i].fp->spans, batch[i].px, batch[i].py);
+                    batch[i].score = score_stamp(plane, *batch[i].fp->mask, batch[i].fp->spans, batch[i].px, batch[i].py, step);
                 });
             }
             marks.next_batch();
             for (size_t i = 0; i < bsize && !stop; ++i) {
                 Candidate& c = batch[i];
                 if (marks.touched(*c.fp->mask, c.px, c.py, W, H)) {
-                    c.score = score_stamp(plane, *c.fp->mask, c.fp->spans, c.px, c.py);
+                    c.score = score_stamp(plane, *c.fp->mask, c.fp->spans, c.px, c.py, step);
                     ++st.rescored;
                 }
                 if (!c.score.valid || c.score.delta >= 0) continue;

@@ -40,6 +40,15 @@ struct PaintOptions {
     // Metropolis temperature at the start of each set, relative to the lambda cost; it decays
     // over the set. 0 = purely greedy acceptance.
     double temperature = 0.25;
+    // Optional per-pixel orientation indices (width * height, each below the header's
+    // orientation count) used instead of the field `orient` would compute: the video painter
+    // passes a field carried with the motion, or taken from the optical flow in moving areas.
+    // Ignored with OrientMode::Random (orientations are then drawn).
+    const std::vector<uint8_t>* orientation_field = nullptr;
+    // Colours are chosen on a lattice of this step (1..32) around the canvas mean under the
+    // stroke, the prediction of frame coding 2 (SPEC.md 7.7.5): a step of 4 saves about 6 bits
+    // a stroke for a fraction of a dB. 1 = the exact least-squares colour.
+    int color_step = 1;
 };
 
 enum class StopReason { Converged, MaxStrokes, TargetPsnr, Cancelled };
@@ -81,6 +90,14 @@ PaintSetup make_setup(uint32_t width, uint32_t height, Rgb8 background, std::vec
 PaintStats paint(const ImageView& model, Canvas& canvas, const Renderer& renderer,
                  const PaintSetup& setup, const PaintOptions& opts, std::vector<Stroke>& out,
                  const std::vector<uint8_t>* region = nullptr, const PaintProgressFn& progress = {});
+
+// How paint() draws its candidates, for frame coding 2 (SPEC.md 7.7): attach it to the Frame
+// holding paint()'s strokes (Frame::replay) with the same arguments, and a writer with
+// Coding::Replay codes only which candidates were accepted. A `region` is used as the 8x8
+// blocks it touches (candidates land anywhere in those blocks).
+constexpr uint16_t kRegionBlock = 8;
+ReplayInfo replay_info(const PaintSetup& setup, const PaintOptions& opts, uint32_t width, uint32_t height,
+                       const std::vector<uint8_t>* region = nullptr);
 
 // PSNR (dB) of an RGB8 image against `a` over all pixels and channels; 99 when identical.
 double psnr(const ImageView& a, const uint8_t* b_rgb);

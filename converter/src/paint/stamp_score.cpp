@@ -45,13 +45,15 @@ ColourSums colour_sums(const Plane& p, const Mask& fp, const Spans& sp, int32_t 
         const size_t base = (size_t(oy + j) * p.width + size_t(ox)) * 3;
         const uint8_t* m = p.model + base;
         const uint8_t* k = p.canvas + base;
-        int64_t r_saa = 0, r0 = 0, r1 = 0, r2 = 0, r_old = 0;
+        int64_t r_saa = 0, r0 = 0, r1 = 0, r2 = 0, r_old = 0, r_sa = 0, c0 = 0, c1 = 0, c2 = 0;
         for (int32_t i = i0; i < i1; ++i) {
             const int32_t a = a_row[i];
             const uint8_t* mi = m + size_t(i) * 3;
             const uint8_t* ki = k + size_t(i) * 3;
             const int32_t na = 255 - a;
             r_saa += a * a;
+            r_sa += a;
+            c0 += a * ki[0]; c1 += a * ki[1]; c2 += a * ki[2];
             r0 += int64_t(a) * (255 * mi[0] - na * ki[0]);
             r1 += int64_t(a) * (255 * mi[1] - na * ki[1]);
             r2 += int64_t(a) * (255 * mi[2] - na * ki[2]);
@@ -59,12 +61,37 @@ ColourSums colour_sums(const Plane& p, const Mask& fp, const Spans& sp, int32_t 
             r_old += d0 * d0 + d1 * d1 + d2 * d2;
         }
         s.saa += r_saa; s.num[0] += r0; s.num[1] += r1; s.num[2] += r2; s.old_err += r_old;
+        s.sa += r_sa; s.sac[0] += c0; s.sac[1] += c1; s.sac[2] += c2;
     }
     return s;
 }
 
-bool best_colour(const ColourSums& s, Rgb8& out) {
+namespace {
+
+// The lattice point pred + step*k in 0..255 nearest the real optimum num / saa.
+int lattice(int64_t num, int64_t saa, int pred, int step) {
+    const int64_t t = num - int64_t(pred) * saa;          // (x* - pred) * saa
+    const int64_t d = int64_t(step) * saa;
+    int64_t k = t >= 0 ? (2 * t + d) / (2 * d) : -((-2 * t + d) / (2 * d));
+    while (pred + step * k > 255) --k;
+    while (pred + step * k < 0) ++k;
+    return int(pred + step * k);
+}
+
+}  // namespace
+
+bool best_colour(const ColourSums& s, Rgb8& out, int step) {
     if (s.saa == 0) return false;
+    if (step > 1 && s.sa > 0) {
+        // The canvas prediction of coding 2: coverage-weighted mean, rounded.
+        int p[3];
+        for (int c = 0; c < 3; ++c) p[c] = int((s.sac[c] + s.sa / 2) / s.sa);
+        const int g = lattice(s.num[1], s.saa, p[1], step);
+        const int r = lattice(s.num[0], s.saa, std::clamp(g + p[0] - p[1], 0, 255), step);
+        const int b = lattice(s.num[2], s.saa, std::clamp(g + p[2] - p[1], 0, 255), step);
+        out = Rgb8{uint8_t(r), uint8_t(g), uint8_t(b)};
+        return true;
+    }
     uint8_t col[3];
     for (int ch = 0; ch < 3; ++ch) {
         // Round half away from zero, then clamp: the optimum of a clamped quadratic is the
@@ -108,17 +135,17 @@ int64_t new_error(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, i
     return e;
 }
 
-StampScore score_stamp(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py) {
+StampScore score_stamp(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py, int step) {
     StampScore s;
     const ColourSums cs = colour_sums(p, fp, sp, px, py, 0, int32_t(fp.h));
-    if (!best_colour(cs, s.color)) return s;
+    if (!best_colour(cs, s.color, step)) return s;
     s.valid = true;
     s.delta = new_error(p, fp, sp, px, py, 0, int32_t(fp.h), s.color) - cs.old_err;
     return s;
 }
 
-StampScore score_stamp(const Plane& p, const Mask& fp, int32_t px, int32_t py) {
-    return score_stamp(p, fp, footprint_spans(fp), px, py);
+StampScore score_stamp(const Plane& p, const Mask& fp, int32_t px, int32_t py, int step) {
+    return score_stamp(p, fp, footprint_spans(fp), px, py, step);
 }
 
 void commit_stamp(const Plane& p, const Mask& fp, int32_t px, int32_t py, Rgb8 color) {

@@ -34,15 +34,18 @@ Spans footprint_spans(const Mask& fp);
 // Partial sums of the first scoring pass over some rows (they add up exactly, in any grouping).
 struct ColourSums {
     int64_t saa = 0, num[3] = {0, 0, 0}, old_err = 0;
+    int64_t sa = 0, sac[3] = {0, 0, 0};  // coverage and coverage-weighted canvas: its mean
     void add(const ColourSums& o) {
-        saa += o.saa; old_err += o.old_err;
-        for (int c = 0; c < 3; ++c) num[c] += o.num[c];
+        saa += o.saa; old_err += o.old_err; sa += o.sa;
+        for (int c = 0; c < 3; ++c) { num[c] += o.num[c]; sac[c] += o.sac[c]; }
     }
 };
 ColourSums colour_sums(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py,
                        int32_t j0, int32_t j1);
-// The least-squares colour from the sums; false when nothing is covered.
-bool best_colour(const ColourSums& s, Rgb8& out);
+// The least-squares colour from the sums; false when nothing is covered. With `step` > 1 the
+// colour is the nearest point of coding 2's colour lattice around the canvas mean under the
+// footprint (SPEC.md 7.7.5): G = P.g + step*k, R = clamp(G + P.r - P.g) + step*k', B likewise.
+bool best_colour(const ColourSums& s, Rgb8& out, int step = 1);
 // The squared error under the footprint rows [j0, j1) after compositing `col`.
 int64_t new_error(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py,
                   int32_t j0, int32_t j1, Rgb8 col);
@@ -57,8 +60,8 @@ struct StampScore {
 // model M, coverage a): c = sum a (255 M - (255 - a) C) / sum a^2, per channel, rounded and
 // clamped. Where coverage is full it is the mean of the model under the stroke; where it is
 // partial the canvas showing through is accounted for. Then the exact error change with blend8.
-StampScore score_stamp(const Plane& p, const Mask& fp, int32_t px, int32_t py);
-StampScore score_stamp(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py);
+StampScore score_stamp(const Plane& p, const Mask& fp, int32_t px, int32_t py, int step = 1);
+StampScore score_stamp(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py, int step = 1);
 
 // Composites the stamp exactly as Renderer::draw does for an opaque stamp: blend8 per channel.
 void commit_stamp(const Plane& p, const Mask& fp, int32_t px, int32_t py, Rgb8 color);

@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "paint/orientation.hpp"
 #include "spt/reader.hpp"
 #include "video/stroke_cull.hpp"
 
@@ -57,7 +58,7 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptio
     co.factor = opts.cut_threshold;
     co.window = opts.cut_window;
     e->cuts_ = CutDetector(co);
-    e->flow_ = std::make_unique<FlowEstimator>(opts.flow);
+    e->flow_ = std::make_unique<FlowEstimator>(opts.flow, opts.flow_width);
 
     Header& h = e->setup_.header;
     h.width = width;
@@ -71,6 +72,11 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptio
     Result<std::unique_ptr<Renderer>> r = Renderer::create(h, e->setup_.templates);
     if (!r) return r.error();
     e->renderer_ = std::move(*r);
+    if (opts.incremental_render) {
+        Result<std::unique_ptr<BandRenderer>> b = BandRenderer::create(h, e->setup_.templates, *e->renderer_);
+        if (!b) return b.error();
+        e->band_ = std::move(*b);
+    }
 
     StreamInfo info;
     info.header = h;
@@ -118,6 +124,40 @@ void VideoEncoder::error_map(const paint::ImageView& model, cv::Mat& err) const 
     cv::blur(err, err, cv::Size(7, 7));
 }
 
+void VideoEncoder::update_orientation(const paint::ImageView& model, const cv::Mat& map, const cv::Mat& region) {
+    if (opts_.paint.orient == paint::OrientMode::Random) {
+        orient_.clear();
+        paint_orient_.clear();
+        return;
+    }
+    const int w = int(model.width), h = int(model.height);
+    const size_t n = size_t(w) * size_t(h);
+    if (map.empty() || orient_.size() != n || since_orient_ + 1 >= uint32_t(std::max(1, opts_.orient_refresh))) {
+        orient_ = paint::orientation_field(model, setup_.header.orientations, opts_.paint.orient);
+        since_orient_ = 0;
+    } else {
+        // The field travels with the content (nearest neighbour: indices do not interpolate).
+        cv::Mat cur(h, w, CV_8U, orient_.data()), warped;
+        cv::remap(cur, warped, map, cv::noArray(), cv::INTER_NEAREST, cv::BORDER_REPLICATE);
+        std::copy(warped.data, warped.data + n, orient_.begin());
+        ++since_orient_;
+    }
+    paint_orient_ = orient_;
+    if (!opts_.flow_orientation || region.empty() || flow_field_.size() != region.size()) return;
+    // Moving areas: strokes laid along the motion (what motion blur leaves of the detail).
+    const float min2 = float(opts_.flow_orient_min * opts_.flow_orient_min);
+    const auto& table = setup_.header.orientations;
+    for (int y = 0; y < h; ++y) {
+        const uint8_t* m = region.ptr<uint8_t>(y);
+        const cv::Vec2f* f = flow_field_.ptr<cv::Vec2f>(y);
+        uint8_t* o = paint_orient_.data() + size_t(y) * size_t(w);
+        for (int x = 0; x < w; ++x) {
+            if (!m[x] || f[x][0] * f[x][0] + f[x][1] * f[x][1] < min2) continue;
+            o[x] = paint::nearest_orientation(table, std::atan2(double(f[x][1]), double(f[x][0])));
+        }
+    }
+}
+
 Status VideoEncoder::encode_key(const paint::ImageView& model, Frame& frame, FrameResult& r) {
     frame.type = FrameType::Key;
     frame.removed.clear();
@@ -125,7 +165,11 @@ Status VideoEncoder::encode_key(const paint::ImageView& model, Frame& frame, Fra
     frame.added.clear();
     canvas_.fill(opts_.background);
     paint::PaintOptions po = frame_paint_options(r.source_number, r.index);
-    const auto t0 = Clock::now();
+    auto t0 = Clock::now();
+    update_orientation(model, cv::Mat(), cv::Mat());
+    if (!paint_orient_.empty()) po.orientation_field = &paint_orient_;
+    r.seconds_orient = seconds_since(t0);
+    t0 = Clock::now();
     painter_(model, canvas_, *renderer_, setup_, po, frame.added, nullptr);
     r.seconds_paint = seconds_since(t0);
     error_map(model, ref_err_);
@@ -150,8 +194,17 @@ Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& 
     std::vector<Stroke> moved = live_;
     Status st = apply_frame(moved, frame, setup_.header);
     if (!st) return st;
-    st = renderer_->render(canvas_, moved);
-    if (!st) return st;
+    const unsigned threads = unsigned(std::max(0, opts_.paint.threads));
+    if (band_) {
+        // Only the bands where strokes moved (the canvas holds the rendering of live_).
+        Result<double> rows = band_->update(canvas_, live_, frame, moved, threads);
+        if (!rows) return rows.error();
+        r.rendered_fraction = *rows;
+    } else {
+        st = renderer_->render(canvas_, moved, threads);
+        if (!st) return st;
+        r.rendered_fraction = 1.0;
+    }
     r.seconds_render = seconds_since(t0);
 
     // Repaint where the painting's error grew past the threshold: content that moved in ways
@@ -177,11 +230,16 @@ Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& 
         want_key = true;
         return {};
     }
+    t0 = Clock::now();
+    update_orientation(model, map, region);
+    r.seconds_orient = seconds_since(t0);
     if (r.repaint_fraction > 0) {
         t0 = Clock::now();
         std::vector<uint8_t> mask(region.data, region.data + region.total());
         paint::PaintOptions po = frame_paint_options(r.source_number, r.index);
+        if (!paint_orient_.empty()) po.orientation_field = &paint_orient_;
         po.max_strokes = std::min<uint64_t>(po.max_strokes, opts_.max_inter_strokes);
+        if (opts_.inter_threshold > 0) po.threshold = opts_.inter_threshold;
         painter_(model, canvas_, *renderer_, setup_, po, frame.added, &mask);
         r.seconds_paint = seconds_since(t0);
         // The painter's new result becomes the reference where it worked.

@@ -17,6 +17,7 @@
 #include "spt/result.hpp"
 #include "spt/types.hpp"
 #include "spt/writer.hpp"
+#include "video/band_render.hpp"
 #include "video/cut_detect.hpp"
 #include "video/motion.hpp"
 #include "video/roi_file.hpp"
@@ -37,10 +38,11 @@ struct FrameResult {
     bool cut = false;             // the cut detector fired
     CutScore cut_score;
     double repaint_fraction = 0;  // share of the canvas marked for repainting (inter frames)
+    double rendered_fraction = 0; // share of the rows rendered again after the motion
     uint32_t added = 0, removed = 0, live = 0;
     double psnr = 0;
     double seconds = 0;
-    double seconds_flow = 0, seconds_render = 0, seconds_paint = 0, seconds_cull = 0;
+    double seconds_flow = 0, seconds_render = 0, seconds_paint = 0, seconds_cull = 0, seconds_orient = 0;
 };
 
 class VideoEncoder {
@@ -74,10 +76,14 @@ private:
                         bool& want_key);
     void error_map(const paint::ImageView& model, cv::Mat& err) const;
     paint::PaintOptions frame_paint_options(long source_number, uint32_t index) const;
+    // The orientation field for this frame's new strokes (see VideoPaintOptions); `map` is the
+    // backward warp of the previous frame (empty on key frames), `region` the repaint mask.
+    void update_orientation(const paint::ImageView& model, const cv::Mat& map, const cv::Mat& region);
 
     VideoPaintOptions opts_;
     paint::PaintSetup setup_;
     std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<BandRenderer> band_;  // incremental update (VideoPaintOptions::incremental_render)
     std::unique_ptr<Writer> writer_;
     PaintFn painter_;
     std::unique_ptr<FlowEstimator> flow_;
@@ -89,6 +95,9 @@ private:
     Canvas canvas_;
     cv::Mat prev_gray_, flow_field_;
     cv::Mat ref_err_;  // error the painter left where it last painted, carried by the motion
+    std::vector<uint8_t> orient_;      // per-pixel orientation indices (empty: painter's own)
+    std::vector<uint8_t> paint_orient_;  // orient_ with this frame's flow orientations
+    uint32_t since_orient_ = 0;        // frames since orient_ was computed from a source frame
     std::vector<uint32_t> pending_removals_;  // hidden strokes, removed by the next frame
     std::vector<uint8_t> scratch_;
     uint32_t next_index_ = 0, since_key_ = 0;

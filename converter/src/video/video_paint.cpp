@@ -51,7 +51,8 @@ std::string options_text(const VideoPaintOptions& o) {
     s << "sets=" << o.sets << " keyframe-interval=" << o.keyframe_interval << " cut-threshold=" << o.cut_threshold
       << " flow=" << flow_method_name(o.flow) << " block=" << o.block_size << " repaint-error=" << o.repaint_error
       << " max-strokes=" << o.paint.max_strokes << " max-inter-strokes=" << o.max_inter_strokes
-      << " target-psnr=" << o.paint.target_psnr << " threshold=" << o.paint.threshold;
+      << " target-psnr=" << o.paint.target_psnr << " threshold=" << o.paint.threshold
+      << " lambda=" << o.paint.lambda << " orient=" << (o.flow_orientation ? "flow+edges" : "edges");
     return s.str();
 }
 

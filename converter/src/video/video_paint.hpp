@@ -47,7 +47,20 @@ struct VideoPaintOptions {
     int block_size = 16;              // motion block in pixels (SPEC.md 5: 8..256)
     double repaint_error = 18.0;      // mean |painting - source| per channel that calls for repaint
     uint64_t max_inter_strokes = 4000;  // cap on strokes added per inter frame
+    // Set-switching threshold of the repaint (PaintOptions::threshold) in inter frames; 0 = the
+    // key frames' value. Higher stops each set sooner: fewer candidates, faster inter frames.
+    double inter_threshold = 0;
     int cull_every = 1;               // remove covered strokes every N frames (0 = never)
+    // Re-render only the canvas bands where strokes moved (same bytes as a full render).
+    bool incremental_render = true;
+    int flow_width = 640;             // optical flow on frames downscaled to at most this width
+    // Stroke orientation for inter frames. The edge field of the key frame travels with the
+    // motion and is recomputed from the source every `orient_refresh` frames (computing it
+    // costs more than the rest of an inter frame). With `flow_orientation`, new strokes where
+    // the flow is at least `flow_orient_min` pixels a frame are laid along the motion instead.
+    int orient_refresh = 8;
+    bool flow_orientation = false;
+    double flow_orient_min = 1.0;
 
     // The still painter's options (seed, threads, max strokes per key frame, target PSNR,
     // threshold, orient) and its setup.

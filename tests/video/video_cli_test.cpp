@@ -1,0 +1,192 @@
+// `spt paint` as a video encoder, through the built binary (SPT_TOOL): interruption by SIGINT
+// and SIGTERM mid-encode, a video file (AVI, MJPG) as input, and `spt render --frames` on the
+// middle of the result against sequential decoding.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "io/image_io.hpp"
+#include "spt/reader.hpp"
+#include "spt/render.hpp"
+#include "synthetic.hpp"
+
+using namespace spt;
+namespace fs = std::filesystem;
+
+namespace {
+
+bool have_tool() { return std::string(SPT_TOOL).size() > 0 && fs::exists(SPT_TOOL); }
+
+// Runs the tool to completion; returns its exit code (-1 when it did not exit normally).
+int run_tool(const std::vector<std::string>& args) {
+    std::string cmd = std::string("'") + SPT_TOOL + "'";
+    for (const auto& a : args) cmd += " '" + a + "'";
+    cmd += " >/dev/null 2>&1 </dev/null";
+    const int st = std::system(cmd.c_str());
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+// A frame sequence dir/seq.####.png of a moving scene.
+void write_sequence(const fs::path& dir, int frames, uint32_t w, uint32_t h) {
+    for (int f = 0; f < frames; ++f) {
+        const auto rgb = spt_test::scene_frame(0, f, w, h);
+        char name[64];
+        std::snprintf(name, sizeof name, "seq.%04d.png", f);
+        ASSERT_TRUE(io::write_image((dir / name).string(), w, h, rgb.data()).ok());
+    }
+}
+
+struct Interrupted {
+    int exit_code = -1;
+    bool signalled = false;     // the process died of the signal (a second one, not ours)
+    double frames_seen = 0;     // frames done per the last progress line before the signal
+    bool sent = false;
+};
+
+// Starts `spt paint` with JSON progress on a pipe, waits until it reports `after` finished
+// frames, sends `sig` and waits for the process to end.
+Interrupted paint_and_interrupt(const std::vector<std::string>& args, int sig, double after) {
+    Interrupted r;
+    int fds[2];
+    if (::pipe(fds) != 0) return r;
+    const pid_t pid = ::fork();
+    if (pid < 0) return r;
+    if (pid == 0) {
+        ::dup2(fds[1], STDOUT_FILENO);
+        const int devnull = ::open("/dev/null", O_WRONLY);
+        if (devnull >= 0) ::dup2(devnull, STDERR_FILENO);
+        ::close(fds[0]);
+        ::close(fds[1]);
+        std::vector<char*> argv;
+        argv.push_back(const_cast<char*>(SPT_TOOL));
+        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        ::execv(SPT_TOOL, argv.data());
+        ::_exit(127);
+    }
+    ::close(fds[1]);
+    FILE* in = ::fdopen(fds[0], "r");
+    char line[4096];
+    while (in && std::fgets(line, sizeof line, in)) {
+        const std::string l = line;
+        const size_t k = l.find("\"done\":");
+        if (l.find("\"progress\"") == std::string::npos || k == std::string::npos) continue;
+        r.frames_seen = std::atof(l.c_str() + k + 7);
+        if (r.frames_seen >= after) {
+            ::kill(pid, sig);
+            r.sent = true;
+            break;
+        }
+    }
+    // Drain the rest so the child never blocks on a full pipe.
+    while (in && std::fgets(line, sizeof line, in)) {
+    }
+    if (in) std::fclose(in);
+    int st = 0;
+    ::waitpid(pid, &st, 0);
+    r.exit_code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    r.signalled = WIFSIGNALED(st);
+    return r;
+}
+
+void check_interrupt(int sig) {
+    if (!have_tool()) GTEST_SKIP() << "spt binary not built";
+    const auto dir = spt_test::temp_dir("cli_sig" + std::to_string(sig));
+    const int total = 150;
+    write_sequence(dir, total, 96, 64);
+    const std::string out = (dir / "out.spt").string();
+    const Interrupted r = paint_and_interrupt(
+        {"paint", (dir / "seq.####.png").string(), "-o", out, "--sets", "4", "--max-strokes", "400",
+         "--threads", "1", "--progress", "json"},
+        sig, 3);
+    ASSERT_TRUE(r.sent) << "the encode ended before reporting 3 frames";
+    EXPECT_FALSE(r.signalled) << "one signal stops cleanly; it must not kill the process";
+    EXPECT_FALSE(fs::exists(out + ".partial")) << "a .partial file was left behind";
+    if (!fs::exists(out)) return;  // nothing at the output path is also a clean outcome
+    EXPECT_EQ(run_tool({"verify", out}), 0) << "the interrupted output is not a valid .spt";
+    auto reader = Reader::open(out);
+    ASSERT_TRUE(reader.ok()) << reader.error().message;
+    ASSERT_TRUE((*reader)->complete());
+    const size_t n = (*reader)->frames().size();
+    EXPECT_GE(double(n), r.frames_seen) << "finished frames are missing";
+    EXPECT_LT(n, size_t(total)) << "the encode was not stopped early";
+    // Every stored frame decodes.
+    auto renderer = Renderer::create((*reader)->info().header, (*reader)->info().templates);
+    ASSERT_TRUE(renderer.ok());
+    Canvas c;
+    for (size_t f = 0; f < n; ++f) {
+        auto live = (*reader)->strokes_at(f);
+        ASSERT_TRUE(live.ok()) << "frame " << f << ": " << live.error().message;
+        ASSERT_TRUE((*renderer)->render(c, **live).ok());
+    }
+}
+
+}  // namespace
+
+TEST(VideoCli, SigintLeavesAValidFileOrNothing) { check_interrupt(SIGINT); }
+
+TEST(VideoCli, SigtermLeavesAValidFileOrNothing) { check_interrupt(SIGTERM); }
+
+TEST(VideoCli, PaintsAnAviAndRenderSeeksIntoTheMiddle) {
+    if (!have_tool()) GTEST_SKIP() << "spt binary not built";
+    const auto dir = spt_test::temp_dir("cli_avi");
+    const std::string avi = (dir / "clip.avi").string();
+    const int w = 96, h = 64, frames = 16;
+    {
+        cv::VideoWriter vw(avi, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 12.0, cv::Size(w, h));
+        if (!vw.isOpened()) GTEST_SKIP() << "OpenCV cannot write MJPG AVI here";
+        for (int f = 0; f < frames; ++f) {
+            auto rgb = spt_test::scene_frame(0, f, w, h);
+            cv::Mat m(h, w, CV_8UC3, rgb.data()), bgr;
+            cv::cvtColor(m, bgr, cv::COLOR_RGB2BGR);
+            vw.write(bgr);
+        }
+    }
+    const std::string out = (dir / "clip.spt").string();
+    ASSERT_EQ(run_tool({"paint", avi, "-o", out, "--sets", "4", "--max-strokes", "400", "--threads", "2",
+                        "--progress", "none"}),
+              0);
+    ASSERT_EQ(run_tool({"verify", out}), 0);
+    auto reader = Reader::open(out);
+    ASSERT_TRUE(reader.ok()) << reader.error().message;
+    const auto& info = (*reader)->info();
+    ASSERT_EQ((*reader)->frames().size(), size_t(frames));
+    EXPECT_EQ(info.header.fps, (Rational{12, 1})) << "frame rate from the container";
+    EXPECT_EQ(info.header.width, uint32_t(w));
+
+    // Frames 7-9 through `spt render --frames` (the index seek) against decoding every frame
+    // from the start in order.
+    const std::string pattern = (dir / "mid.####.png").string();
+    ASSERT_EQ(run_tool({"render", out, "-o", pattern, "--frames", "7-9", "--progress", "none"}), 0);
+    auto renderer = Renderer::create(info.header, info.templates);
+    ASSERT_TRUE(renderer.ok());
+    std::vector<Stroke> live;
+    Canvas c;
+    for (size_t f = 0; f < 10; ++f) {
+        auto got = (*reader)->read_frame(f);
+        ASSERT_TRUE(got.ok()) << got.error().message;
+        ASSERT_TRUE(apply_frame(live, *got, info.header).ok());
+        if (f < 7) continue;
+        ASSERT_TRUE((*renderer)->render(c, live).ok());
+        char name[64];
+        std::snprintf(name, sizeof name, "mid.%04zu.png", f);
+        auto img = io::read_image((dir / name).string());
+        ASSERT_TRUE(img.ok()) << name << ": " << img.error().message;
+        ASSERT_EQ(img->rgb.size(), c.rgb.size());
+        EXPECT_TRUE(img->rgb == c.rgb) << "frame " << f << " rendered by seeking differs from sequential decoding";
+    }
+}
