@@ -28,7 +28,7 @@ def templates():
             r = math.sqrt(u * u + v * v)
             px.append(max(0, min(255, int(255 * (1.2 - r) / 0.4))) if r < 1.2 else 0)
     return [Template(model.TEMPLATE_BITMAP, w, h, bytes(px), "soft"),
-            Template(model.TEMPLATE_ELLIPSE, 0, 0, b"", "ellipse"),
+            Template(model.TEMPLATE_ELLIPSE, 0, 0, b"", "ellipse", 4),  # 4x4 supersampled
             Template(model.TEMPLATE_TRIANGLE, 0, 0, b"", "triangle")]
 
 

@@ -110,20 +110,25 @@ TEST(PaintSetupTest, DefaultSetsGoFromLargeToSmall) {
     EXPECT_EQ(default_sets(100, 100, 50).size(), 10u);
 }
 
-TEST(PaintSetupTest, BuiltInTemplatesAreTheFourBrushes) {
+TEST(PaintSetupTest, BuiltInTemplatesAreTheMeasuredThree) {
+    // README.md "Templates": analytic rectangle and ellipse, a 16x16 soft round.
     const auto t = default_templates();
-    ASSERT_EQ(t.size(), 4u);
+    ASSERT_EQ(t.size(), 3u);
     EXPECT_EQ(t[0].name, "rectangle");
     EXPECT_EQ(t[0].kind, TemplateKind::Rectangle);
-    for (size_t i = 1; i < 4; ++i) {
-        EXPECT_EQ(t[i].kind, TemplateKind::Bitmap);
-        EXPECT_EQ(t[i].width, 60);
-        EXPECT_EQ(t[i].height, 60);
-        ASSERT_EQ(t[i].pixels.size(), 3600u);
-        uint64_t sum = 0;
-        for (uint8_t v : t[i].pixels) sum += v;
-        EXPECT_GT(sum, 3600u * 255 / 4) << t[i].name;  // a brush, not a speck
-    }
+    EXPECT_EQ(t[2].name, "ellipse");
+    EXPECT_EQ(t[2].kind, TemplateKind::Ellipse);
+    EXPECT_EQ(t[2].supersample, 4);
+    EXPECT_EQ(t[1].name, "soft-round");
+    EXPECT_EQ(t[1].kind, TemplateKind::Bitmap);
+    EXPECT_EQ(t[1].width, 16);
+    EXPECT_EQ(t[1].height, 16);
+    ASSERT_EQ(t[1].pixels.size(), 256u);
+    uint64_t sum = 0;
+    for (uint8_t v : t[1].pixels) sum += v;
+    EXPECT_GT(sum, 256u * 255 / 4);  // a brush, not a speck
+    EXPECT_EQ(t[1].pixels[0], 0);     // soft: nothing in the corners
+    EXPECT_EQ(t[1].pixels[8 * 16 + 8], 255);
 }
 
 namespace {

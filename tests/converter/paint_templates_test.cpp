@@ -28,18 +28,24 @@ void write_gray(const fs::path& p, uint32_t w, uint32_t h, uint8_t v) {
 
 }  // namespace
 
-TEST(PaintTemplates, ShippedFolderLoadsAsFourBitmaps) {
+TEST(PaintTemplates, ShippedFoldersLoadAsBitmaps) {
+    // The built-in set's PNGs (16x16, make_templates.py) and the textured brushes (60x60).
     auto t = io::load_templates(std::string(SPT_SOURCE_DIR) + "/converter/templates");
     ASSERT_TRUE(t.ok()) << t.error().message;
-    ASSERT_EQ(t->size(), 4u);
+    ASSERT_EQ(t->size(), 3u);
     EXPECT_EQ((*t)[0].name, "0-rectangle");
-    EXPECT_EQ((*t)[3].name, "3-dry-brush");
+    EXPECT_EQ((*t)[2].name, "2-ellipse");
     for (const auto& x : *t) {
         EXPECT_EQ(x.kind, TemplateKind::Bitmap);
-        EXPECT_EQ(x.width, 60);
-        EXPECT_EQ(x.height, 60);
+        EXPECT_EQ(x.width, 16);
+        EXPECT_EQ(x.height, 16);
     }
-    EXPECT_EQ((*t)[0].pixels, std::vector<uint8_t>(3600, 255));
+    EXPECT_EQ((*t)[0].pixels, std::vector<uint8_t>(256, 255));
+    auto b = io::load_templates(std::string(SPT_SOURCE_DIR) + "/converter/templates/brushes");
+    ASSERT_TRUE(b.ok()) << b.error().message;
+    ASSERT_EQ(b->size(), 2u);
+    EXPECT_EQ((*b)[1].name, "1-dry-brush");
+    EXPECT_EQ((*b)[1].width, 60);
 }
 
 TEST(PaintTemplates, AnySizeUpTo1024AndNameOrder) {

@@ -58,6 +58,8 @@ class Template:
     height: int = 0
     pixels: bytes = b""  # bitmap only: width*height coverage bytes, top row first
     name: str = ""
+    # Analytic kinds only: N for an N x N supersampling grid (SPEC.md 3.2, 8.4), 0 = one sample.
+    supersample: int = 0
 
 
 @dataclass

@@ -161,9 +161,11 @@ def _parse_tmpl(p, path, off, limits) -> Template:
             raise _err(path, off, f"bitmap template holds {len(rest)} samples, expected {w * h}")
         return Template(kind, w, h, bytes(rest), name)
     if kind in (1, 2, 3):
-        if coding != 0 or w != 0 or h != 0 or len(rest) != 0:
-            raise _err(path, off, "analytic template with non-zero coding, size or samples")
-        return Template(kind, 0, 0, b"", name)
+        if coding == 1 or coding > 16:
+            raise _err(path, off, f"analytic template with reserved supersampling value {coding}")
+        if w != 0 or h != 0 or len(rest) != 0:
+            raise _err(path, off, "analytic template with non-zero size or samples")
+        return Template(kind, 0, 0, b"", name, coding)
     raise _err(path, off, f"template kind {kind} is not supported")
 
 

@@ -14,7 +14,7 @@ def to_json(info: StreamInfo) -> str:
                    "background": list(h.background), "sets": [list(s) for s in h.sets],
                    "orientations": [list(o) for o in h.orientations]},
         "templates": [{"kind": t.kind, "width": t.width, "height": t.height, "name": t.name,
-                       "pixels": base64.b64encode(t.pixels).decode("ascii")} for t in info.templates],
+                       "pixels": base64.b64encode(t.pixels).decode("ascii"), "supersample": t.supersample} for t in info.templates],
         "metadata": [list(kv) for kv in info.metadata],
         "rois": [[r.first_frame, r.last_frame, r.x, r.y, r.w, r.h] for r in info.rois],
         "extra": [[c.decode("latin-1"), base64.b64encode(p).decode("ascii")] for c, p in info.extra_chunks],
@@ -30,7 +30,7 @@ def from_json(text: str) -> StreamInfo:
                orientations=[tuple(int(v) for v in o) for o in hd["orientations"]])
     info = StreamInfo(header=h)
     info.templates = [Template(int(t["kind"]), int(t["width"]), int(t["height"]),
-                               base64.b64decode(t["pixels"]), t.get("name", "")) for t in d.get("templates", [])]
+                               base64.b64decode(t["pixels"]), t.get("name", ""), int(t.get("supersample", 0))) for t in d.get("templates", [])]
     info.metadata = [(k, v) for k, v in d.get("metadata", [])]
     info.rois = [Roi(*map(int, r)) for r in d.get("rois", [])]
     info.extra_chunks = [(c.encode("latin-1"), base64.b64decode(p)) for c, p in d.get("extra", [])]

@@ -31,7 +31,10 @@ def tmpl_payload(t) -> bytes:
         if len(t.pixels) != t.width * t.height:
             raise SptError(f"template '{t.name}': {len(t.pixels)} samples for {t.width}x{t.height}")
         return struct.pack("<BBHHB", 0, 0, t.width, t.height, len(name)) + name + bytes(t.pixels)
-    return struct.pack("<BBHHB", t.kind, 0, 0, 0, len(name)) + name
+    ss = getattr(t, "supersample", 0)
+    if ss == 1 or ss > 16:
+        raise SptError(f"template '{t.name}': supersampling {ss} is not 0 or 2..16")
+    return struct.pack("<BBHHB", t.kind, ss, 0, 0, len(name)) + name
 
 
 def meta_payload(items) -> bytes:

@@ -58,6 +58,9 @@ int paint_sequence(const PaintCommandOptions& o) {
     v.sets = o.sets;
     v.background = o.background;
     v.stored_coding = o.stored;
+    v.coding = o.coding;
+    v.target_bytes = o.target_bytes;
+    v.target_bytes_per_second = o.target_bytes_per_second;
     if (!o.templates_dir.empty()) {
         auto t = io::load_templates(o.templates_dir);
         if (!t) return fail(t.error().message);
@@ -154,7 +157,7 @@ int paint_still(const PaintCommandOptions& o) {
             std::filesystem::remove(scratch);
             return p;
         };
-        const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes);
+        const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes, 0.03, 9, po.lambda);
         po.lambda = best.lambda;
         std::fprintf(stderr, "spt paint: --target-bytes %llu: lambda %.4g gives %llu bytes (%+.1f%%), %.2f dB\n",
                      (unsigned long long)o.target_bytes, best.lambda, (unsigned long long)best.bytes,

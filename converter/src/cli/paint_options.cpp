@@ -1,5 +1,7 @@
 #include "cli/paint_options.hpp"
 
+#include "paint/rate_control.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -122,14 +124,16 @@ void print_paint_help(std::FILE* f) {
         "                         improvement over a window (half a canvas coverage of the\n"
         "                         set's strokes) drops below X (default 0.01)\n"
         "  --lambda X             rate-distortion acceptance: a stroke must remove the error of\n"
-        "                         X average pixels (default 64; 0 = any improvement);\n"
-        "                         with --target-psnr it halves whenever the painting stalls\n"
+        "                         X average pixels (0 = any improvement); default 24, or\n"
+        "                         with --target-psnr 24 * 2^((28 - DB) / 4) in 8..64 (measured\n"
+        "                         best per target); it halves whenever the painting stalls\n"
         "                         short of the target\n"
         "  --temperature X        Metropolis temperature at the start of a set, relative to the\n"
         "                         lambda cost (default 0.25; 0 = greedy)\n"
         "  --templates DIR        use the grayscale images of DIR (name order, up to 1024x1024,\n"
         "                         60x60 by convention) as stroke templates instead of the\n"
-        "                         built-in rectangle, soft round, bristle and dry brush\n"
+        "                         built-in rectangle, soft round and ellipse (textured\n"
+        "                         brushes: converter/templates/brushes/)\n"
         "  --roi x,y,w,h          a region of interest painted down to the finest set (the\n"
         "                         finest set paints only there); repeatable\n"
         "  --roi-file F           regions of interest from JSON:\n"
@@ -145,8 +149,9 @@ void print_paint_help(std::FILE* f) {
         "  --stored               write stored (coding 0) frames instead of range-coded ones\n"
         "  --coding 1|2           2 (default): code which of the painter's replayable random\n"
         "                         candidates were accepted (SPEC.md 7.7); 1: explicit positions\n"
-        "  --color-step Q         choose colours on a lattice of step Q (1..32, default 4) around\n"
-        "                         the canvas under the stroke: coding 2 spends fewer bits on them\n"
+        "  --color-step Q         choose colours on a lattice of step Q (1..32; default 12, or 4\n"
+        "                         with --target-psnr above 33) around the canvas under the\n"
+        "                         stroke: coding 2 spends fewer bits on them\n"
         "  --target-bytes N[/s]   search lambda so that the file is at most N bytes (N/s: per\n"
         "                         second of a clip); reports where it landed"
         "\n"
@@ -177,7 +182,9 @@ void print_paint_help(std::FILE* f) {
 
 ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, std::string& err) {
     bool have_sets = false;
-    o.paint.color_step = 4;  // measured: ~6 bits a stroke less in coding 2 at the same PSNR (bench/rate_bench.sh)
+    // Defaults chosen by measurement (paint/rate_control.hpp rate_defaults, bench/rate_sweep.sh);
+    // with --target-psnr they follow the target unless given.
+    bool have_lambda = false, have_step = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&](std::string& v) -> bool {
@@ -219,6 +226,7 @@ ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, s
         } else if (a == "--lambda") {
             if (!value(v)) return ParseResult::Error;
             if (!parse_double(v, 0, 1e6, o.paint.lambda)) { err = "--lambda: expected a number >= 0, got '" + v + "'"; return ParseResult::Error; }
+            have_lambda = true;
         } else if (a == "--temperature") {
             if (!value(v)) return ParseResult::Error;
             if (!parse_double(v, 0, 1e3, o.paint.temperature)) { err = "--temperature: expected a number >= 0, got '" + v + "'"; return ParseResult::Error; }
@@ -263,6 +271,7 @@ ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, s
             if (!value(v)) return ParseResult::Error;
             if (!parse_int(v, 1, 32, n)) { err = "--color-step: expected 1..32, got '" + v + "'"; return ParseResult::Error; }
             o.paint.color_step = int(n);
+            have_step = true;
         } else if (a == "--target-bytes") {
             if (!value(v)) return ParseResult::Error;
             std::string num = v;
@@ -308,6 +317,9 @@ ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, s
             return ParseResult::Error;
         }
     }
+    const paint::RateDefaults rd = paint::rate_defaults(o.paint.target_psnr);
+    if (!have_lambda) o.paint.lambda = rd.lambda;
+    if (!have_step) o.paint.color_step = rd.color_step;
     if (o.input.empty()) { err = "no input image given"; return ParseResult::Error; }
     if (o.output.empty()) { err = "no output given (-o OUT.spt)"; return ParseResult::Error; }
     if (have_sets && !o.set_sizes.empty()) { err = "give --sets or --set-sizes, not both"; return ParseResult::Error; }

@@ -14,10 +14,21 @@ struct RatePoint {
     double psnr = 0;
 };
 
+// The measured best (lambda, colour step) for painting to a PSNR target in one pass
+// (bench/rate_sweep.sh, README.md "Default lambda"): at 28 dB lambda 24 and step 12 code the
+// fewest bytes (median over stills and 1280x720 frames); lower targets favour larger lambdas,
+// higher ones smaller, and above 33 dB the colour step 12 costs more strokes than it saves.
+// target_psnr <= 0 (no target) gives the 28 dB point.
+struct RateDefaults {
+    double lambda = 24;
+    int color_step = 12;
+};
+RateDefaults rate_defaults(double target_psnr);
+
 // `trial(lambda)` paints at lambda and returns the coded size and PSNR. Returns the point with
 // the largest size not above `target_bytes` (or the smallest point when none fits), after at
 // most `max_trials` paints. Sizes within `tolerance` (relative) below the target stop early.
 RatePoint search_bytes(const std::function<RatePoint(double)>& trial, uint64_t target_bytes,
-                       double tolerance = 0.03, int max_trials = 9);
+                       double tolerance = 0.03, int max_trials = 9, double first_lambda = 24);
 
 }  // namespace spt::paint

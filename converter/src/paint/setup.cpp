@@ -33,9 +33,13 @@ std::vector<Template> default_templates() {
         Template t;
         t.name = d.name;
         if (t.name == "rectangle") {
-            // The plain rectangle is the analytic kind: exact at every size and no samples to
-            // store. Its PNG in converter/templates/ is the same shape as a bitmap.
+            // Analytic kinds are exact at every size and store no samples (their PNGs in
+            // converter/templates/ show the same shape). The ellipse is 4x4 supersampled: its
+            // anti-aliased rim paints like the bitmaps' soft edges.
             t.kind = TemplateKind::Rectangle;
+        } else if (t.name == "ellipse") {
+            t.kind = TemplateKind::Ellipse;
+            t.supersample = 4;
         } else {
             t.kind = TemplateKind::Bitmap;
             t.width = uint16_t(d.width);

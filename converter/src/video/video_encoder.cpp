@@ -83,7 +83,7 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptio
     info.templates = e->setup_.templates;
     info.metadata = std::move(metadata);
     WriterOptions wo;
-    wo.coding = opts.stored_coding ? Coding::Stored : Coding::Range;
+    wo.coding = opts.stored_coding ? Coding::Stored : opts.coding == 1 ? Coding::Range : Coding::Replay;
     Result<std::unique_ptr<Writer>> w = Writer::create(opts.output, info, wo);
     if (!w) return w.error();
     e->writer_ = std::move(*w);
@@ -103,6 +103,7 @@ uint64_t VideoEncoder::bytes_written() const { return writer_ ? writer_->stats()
 paint::PaintOptions VideoEncoder::frame_paint_options(long source_number, uint32_t index) const {
     paint::PaintOptions po = opts_.paint;
     po.seed = frame_seed(opts_.paint.seed, index);
+    po.lambda = opts_.paint.lambda * lambda_scale_;
     po.rois.clear();
     for (const RoiSpec& r : rois_) {
         if (source_number < r.first || source_number > r.last) continue;
@@ -171,6 +172,7 @@ Status VideoEncoder::encode_key(const paint::ImageView& model, Frame& frame, Fra
     r.seconds_orient = seconds_since(t0);
     t0 = Clock::now();
     painter_(model, canvas_, *renderer_, setup_, po, frame.added, nullptr);
+    frame.replay = paint::replay_info(setup_, po, model.width, model.height);  // frame coding 2
     r.seconds_paint = seconds_since(t0);
     error_map(model, ref_err_);
     r.type = FrameType::Key;
@@ -241,6 +243,7 @@ Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& 
         po.max_strokes = std::min<uint64_t>(po.max_strokes, opts_.max_inter_strokes);
         if (opts_.inter_threshold > 0) po.threshold = opts_.inter_threshold;
         painter_(model, canvas_, *renderer_, setup_, po, frame.added, &mask);
+        frame.replay = paint::replay_info(setup_, po, model.width, model.height, &mask);
         r.seconds_paint = seconds_since(t0);
         // The painter's new result becomes the reference where it worked.
         cv::Mat after;
@@ -284,6 +287,14 @@ Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, long source_numb
     Status st = writer_->append(frame);
     if (!st) return st.error();
     r.added = uint32_t(frame.added.size());
+    if (opts_.frame_byte_budget > 0) {
+        // Rate control: the next frame's lambda follows the running ratio of bytes spent to
+        // bytes allowed so far (bytes fall roughly as lambda^-1/2 near the default, hence the
+        // cube: a 10% overshoot raises lambda by a third). Clamped to 1/16..256.
+        const double spent = double(writer_->stats().frame_bytes);
+        const double allowed = opts_.frame_byte_budget * double(next_index_ + 1);
+        lambda_scale_ = std::clamp(std::pow(spent / allowed, 3.0), 1.0 / 16, 256.0);
+    }
     live_.insert(live_.end(), frame.added.begin(), frame.added.end());
 
     // Book-keeping for the next frame.

@@ -103,6 +103,7 @@ private:
     uint32_t next_index_ = 0, since_key_ = 0;
     VideoPaintReport report_;
     double psnr_sum_ = 0;
+    double lambda_scale_ = 1.0;        // rate control: multiplies opts_.paint.lambda
     bool finished_ = false;
 };
 

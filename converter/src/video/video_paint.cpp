@@ -95,8 +95,19 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         {"painter.seed", std::to_string(opts.paint.seed)},
         {"painter.options", options_text(opts)},
     };
+    VideoPaintOptions eo = opts;
+    if (opts.target_bytes > 0) {
+        // Per second: N / fps bytes a frame. Whole clip: N over the frames the source expects
+        // (unknown: over one key frame interval, the best guess of a clip's length).
+        const double per_frame = opts.target_bytes_per_second
+                                     ? double(opts.target_bytes) * fps.den / std::max<uint32_t>(1, fps.num)
+                                     : double(opts.target_bytes) /
+                                           double(source.expected_frames() > 0 ? source.expected_frames()
+                                                                               : uint64_t(opts.keyframe_interval));
+        eo.frame_byte_budget = std::max(1.0, per_frame);
+    }
     Result<std::unique_ptr<VideoEncoder>> enc =
-        VideoEncoder::create(opts, frame.image.width, frame.image.height, fps, rois, meta);
+        VideoEncoder::create(eo, frame.image.width, frame.image.height, fps, rois, meta);
     if (!enc) return enc.error();
     VideoEncoder& encoder = **enc;
 

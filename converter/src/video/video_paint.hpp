@@ -69,6 +69,15 @@ struct VideoPaintOptions {
     std::vector<Template> templates;  // empty = paint::default_templates()
     Rgb8 background{255, 255, 255};
     bool stored_coding = false;       // coding 0 instead of range coding
+    // 2: frame coding 2 where the painter's candidates replay (SPEC.md 7.7), else coding 1;
+    // 1: coding 1 only.
+    int coding = 2;
+    // Rate control (`--target-bytes N[/s]`): a byte budget for the whole clip, or per second of
+    // it. run_video_paint turns it into `frame_byte_budget`, which the encoder meets by scaling
+    // each frame's lambda with the running overshoot (VideoEncoder::add_frame).
+    uint64_t target_bytes = 0;
+    bool target_bytes_per_second = false;
+    double frame_byte_budget = 0;     // bytes per frame; 0 = no rate control
 
     // Set from anywhere (signal handler, test) to stop after the current frame; the output then
     // holds every finished frame. run_video_paint installs SIGINT/SIGTERM handlers that set it.
