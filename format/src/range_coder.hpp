@@ -9,6 +9,15 @@
 
 #include "spt/writer.hpp"
 
+// The model functions below are forced inline so that a decoder's state stays in registers
+// across a whole stroke instead of going through memory on every bit (a store-to-load
+// round trip on the critical path of each decision).
+#if defined(__GNUC__) || defined(__clang__)
+#define SPT_CODER_INLINE __attribute__((always_inline)) inline
+#else
+#define SPT_CODER_INLINE inline
+#endif
+
 namespace spt::detail {
 
 constexpr uint16_t kProbInit = 1024;  // P(bit = 0) in units of 1/2048
@@ -73,51 +82,64 @@ private:
     bool drop_first_ = true;
 };
 
+// The decoder of SPEC.md 7.2, written without data-dependent branches: positions and colour
+// residuals are close to random bits, and a mispredicted branch per bit cost more than the
+// bit's arithmetic (bench/decode_bench). The selects below compile to conditional moves.
 class RangeDecoder {
 public:
     static constexpr bool kDecoding = true;
     RangeDecoder(const uint8_t* data, size_t size, FieldStats* stats = nullptr)
-        : p_(data), n_(size), stats_(stats) {
+        : p_(size ? data : kZero), last_(size ? size - 1 : 0), n_(size), stats_(stats) {
         for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | next();
     }
     void set_field(Field f) { field_ = f; }
-    int bit(uint16_t& p, int /*ignored*/ = 0) {
-        const uint32_t bound = (range_ >> kProbBits) * p;
-        int b;
-        if (code_ < bound) {
-            if (stats_) account(p);
-            range_ = bound;
-            p = uint16_t(p + ((2048u - p) >> kAdaptShift));
-            b = 0;
-        } else {
-            if (stats_) account(2048u - p);
-            code_ -= bound;
-            range_ -= bound;
-            p = uint16_t(p - (p >> kAdaptShift));
-            b = 1;
-        }
+    SPT_CODER_INLINE int bit(uint16_t& p, int /*ignored*/ = 0) {
+        const uint32_t pv = p;
+        const uint32_t bound = (range_ >> kProbBits) * pv;
+        const uint32_t keep = split(bound);  // all ones for a 0 bit
+        if (stats_) account(pv ^ ((pv ^ (2048u - pv)) & ~keep));
+        // 0: p + ((2048 - p) >> 5); 1: p - (p >> 5); both are p - floor((p - t) / 32) with
+        // t = 2017 or 0 (arithmetic shift).
+        p = uint16_t(int32_t(pv) - ((int32_t(pv) - int32_t(2017u & keep)) >> kAdaptShift));
         normalize();
-        return b;
+        return int(keep + 1);
     }
-    int direct(int /*ignored*/ = 0) {
+    SPT_CODER_INLINE int direct(int /*ignored*/ = 0) {
         if (stats_) (*stats_)[field_] += 1.0;
-        const uint32_t bound = (range_ >> kProbBits) << 10;
-        int b = 0;
-        if (code_ >= bound) { code_ -= bound; range_ -= bound; b = 1; } else range_ = bound;
+        const uint32_t keep = split((range_ >> kProbBits) << 10);
         normalize();
-        return b;
+        return int(keep + 1);
     }
     // True when the decoder read every byte of the stream (bytes past its end read as 0).
     bool consumed_all() const { return pos_ >= n_; }
     bool failed() const { return false; }
 
 private:
+    static constexpr uint8_t kZero[1] = {0};
+    // Narrows to [0, bound) (returns all ones: bit 0) or [bound, range) (returns 0: bit 1) with
+    // arithmetic on a mask instead of a branch.
+    SPT_CODER_INLINE uint32_t split(uint32_t bound) {
+        const uint32_t keep = uint32_t(uint64_t(int64_t(code_) - int64_t(bound)) >> 32);  // code < bound
+        const uint32_t hi = range_ - bound;
+        code_ -= bound & ~keep;
+        range_ = hi ^ ((hi ^ bound) & keep);
+        return keep;
+    }
     void account(uint32_t p) { (*stats_)[field_] += bit_cost(p); }
     uint8_t next() { uint8_t b = pos_ < n_ ? p_[pos_] : 0; ++pos_; return b; }
-    void normalize() {
-        while (range_ < kTop) { range_ <<= 8; code_ = (code_ << 8) | next(); }
+    // One bit leaves range >= 2^13 * 31 (p stays in 31..2017), so one byte always restores
+    // range >= 2^24. Past the end the byte is 0: read the last byte and mask it.
+    SPT_CODER_INLINE void normalize() {
+        if (range_ < kTop) {
+            const uint32_t in = pos_ < n_ ? 0xFFu : 0u;
+            const uint32_t byte = p_[pos_ < n_ ? pos_ : last_] & in;
+            range_ <<= 8;
+            code_ = (code_ << 8) | byte;
+            ++pos_;
+        }
     }
     const uint8_t* p_;
+    size_t last_;
     size_t n_;
     size_t pos_ = 0;
     FieldStats* stats_;
@@ -138,13 +160,13 @@ struct BitTree {
 };
 
 template <class C>
-uint32_t code_tree(C& c, uint16_t* probs, int nbits, uint32_t v) {
+SPT_CODER_INLINE uint32_t code_tree(C& c, uint16_t* probs, int nbits, uint32_t v) {
     uint32_t m = 1;
     for (int i = nbits - 1; i >= 0; --i) m = (m << 1) | uint32_t(c.bit(probs[m], int((v >> i) & 1)));
     return m - (1u << nbits);
 }
 template <class C>
-uint32_t code_tree(C& c, BitTree& t, uint32_t v) { return code_tree(c, t.p.data(), t.nbits, v); }
+SPT_CODER_INLINE uint32_t code_tree(C& c, BitTree& t, uint32_t v) { return code_tree(c, t.p.data(), t.nbits, v); }
 
 // Adaptive Exp-Golomb for 0 .. 2^32-1: the bit length of u+1 in unary with adaptive
 // contexts, then its bits below the leading one, equiprobable.
@@ -155,7 +177,7 @@ struct UIntModel {
 };
 
 template <class C>
-uint64_t code_uint(C& c, UIntModel& m, uint64_t u) {
+SPT_CODER_INLINE uint64_t code_uint(C& c, UIntModel& m, uint64_t u) {
     const uint64_t v = u + 1;
     const int k = bit_length(v) - 1;
     int kk = 0;
@@ -172,7 +194,7 @@ struct SIntModel {
 };
 
 template <class C>
-int64_t code_sint(C& c, SIntModel& m, int64_t v) {
+SPT_CODER_INLINE int64_t code_sint(C& c, SIntModel& m, int64_t v) {
     if (!c.bit(m.zero, v != 0 ? 1 : 0)) return 0;
     const int neg = c.bit(m.sign, v < 0 ? 1 : 0);
     const uint64_t a = v < 0 ? uint64_t(-v) : uint64_t(v);
@@ -189,7 +211,7 @@ struct Res8Model {
 };
 
 template <class C>
-int code_res8(C& c, Res8Model& m, int v) {
+SPT_CODER_INLINE int code_res8(C& c, Res8Model& m, int v) {
     if (!c.bit(m.zero, v != 0 ? 1 : 0)) return 0;
     const int neg = c.bit(m.sign, v < 0 ? 1 : 0);
     const uint32_t a = uint32_t(v < 0 ? -v : v);

@@ -89,10 +89,11 @@ Status decode_stroke_stream(const uint8_t* p, size_t n, uint32_t count, const De
     out.reserve(std::min<size_t>(count, 1u << 16));
     SyntaxError err;
     for (uint32_t i = 0; i < count; ++i) {
-        Stroke s;
-        if (!code_stroke(dec, *st, s, ctx.limits, err))
+        // Decoded in place: no Stroke is built and moved per stroke.
+        if (!code_stroke(dec, *st, out.emplace_back(), ctx.limits, err)) {
+            out.pop_back();
             return body_error(ctx, Code::Corrupt, "stroke " + std::to_string(i) + ": " + err.msg);
-        out.push_back(std::move(s));
+        }
     }
     if (!dec.consumed_all()) return body_error(ctx, Code::Corrupt, "stroke stream has bytes after its last stroke");
     return {};

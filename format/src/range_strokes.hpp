@@ -104,7 +104,7 @@ struct SyntaxError {
 };
 
 template <class C>
-int64_t code_position(C& c, PosModel& m, int32_t v, uint32_t extent, SyntaxError& err) {
+SPT_CODER_INLINE int64_t code_position(C& c, PosModel& m, int32_t v, uint32_t extent, SyntaxError& err) {
     int64_t p = int64_t(v) >> 4;
     uint32_t f = uint32_t(v) & 15;
     const bool outside = c.bit(m.inside, (p >= 0 && p < int64_t(extent)) ? 0 : 1);
@@ -127,7 +127,7 @@ int64_t code_position(C& c, PosModel& m, int32_t v, uint32_t extent, SyntaxError
 }
 
 template <class C>
-void code_color(C& c, StrokeCoderState& st, Rgba8& col, int32_t ax, int32_t ay, int cls, SyntaxError& err) {
+SPT_CODER_INLINE void code_color(C& c, StrokeCoderState& st, Rgba8& col, int32_t ax, int32_t ay, int cls, SyntaxError& err) {
     c.set_field(Field::Color);
     const Rgb8 p = st.predict(ax, ay);
     const int pg = p.g, pr = p.r - p.g, pb = p.b - p.g;
@@ -155,7 +155,7 @@ void code_color(C& c, StrokeCoderState& st, Rgba8& col, int32_t ax, int32_t ay, 
 // canonical: a decoder rejects a form, or a shift, that the entries would have allowed to be
 // smaller.
 template <class C>
-bool code_affine_matrix(C& c, StrokeCoderState& st, AffineStroke& t, SyntaxError& err) {
+SPT_CODER_INLINE bool code_affine_matrix(C& c, StrokeCoderState& st, AffineStroke& t, SyntaxError& err) {
     const bool axis = c.bit(st.axis_aligned, (t.b == 0 && t.c == 0) ? 1 : 0);
     bool iso = false, sim = false;
     if (axis) iso = c.bit(st.same_scale, t.a == t.d ? 1 : 0);
@@ -191,7 +191,7 @@ bool code_affine_matrix(C& c, StrokeCoderState& st, AffineStroke& t, SyntaxError
 
 // One stroke (SPEC.md 7.4.2). Returns false and fills `err` on an invalid coded value.
 template <class C>
-bool code_stroke(C& c, StrokeCoderState& st, Stroke& s, const Limits& lim, SyntaxError& err) {
+SPT_CODER_INLINE bool code_stroke(C& c, StrokeCoderState& st, Stroke& s, const Limits& lim, SyntaxError& err) {
     const StreamShape& sh = st.shape;
     c.set_field(Field::Kind);
     int kind = 0;

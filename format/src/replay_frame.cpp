@@ -94,7 +94,7 @@ Status start_canvas(const Frame& edits, FrameType type, const Header& hd, const 
 template <class C>
 bool code_sets(C& c, std::vector<ReplaySet>& sets, uint64_t seed, bool random_orient, int step, uint64_t added,
                const Header& hd, uint32_t templates, const Renderer& renderer, Canvas& canvas, SyntaxError& err) {
-    ReplayCoderState st(uint32_t(hd.orientations.size()));
+    ReplayCoderState st(uint32_t(hd.orientations.size()), renderer);
     uint64_t left = added;
     for (uint32_t s = 0; s < sets.size(); ++s) {
         c.set_field(Field::Candidates);

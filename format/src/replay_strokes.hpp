@@ -25,7 +25,8 @@ struct ReplayCoderState {
     std::array<std::array<UIntModel, 6>, 4> gap;        // [set class][previous gap class]
     std::array<std::array<BitTree, 4>, 4> orient;       // [set class][edge strength]
     Res8Model color[3][4][4];                           // [G, R-G, B-G][set class][activity]
-    explicit ReplayCoderState(uint32_t orientations) {
+    FootprintTable footprints;                          // colour predictions' stamp coverage
+    ReplayCoderState(uint32_t orientations, const Renderer& renderer) : footprints(renderer) {
         for (auto& m : mask) m = kProbInit;
         const int ob = orientations ? bit_length(orientations - 1) : 0;
         for (auto& row : orient)
@@ -92,6 +93,9 @@ bool code_replay_set(C& c, ReplayCoderState& st, ReplaySet& set, uint32_t s, uin
     if constexpr (C::kDecoding) {
         set.counters.clear();
         set.strokes.clear();
+        // A count is only a claim until its strokes decode: reserve a bounded amount.
+        set.counters.reserve(size_t(std::min<uint64_t>(k, 1u << 16)));
+        set.strokes.reserve(size_t(std::min<uint64_t>(k, 1u << 16)));
     }
     int64_t prev = -1;
     uint64_t prev_gap = 0;
@@ -120,8 +124,7 @@ bool code_replay_set(C& c, ReplayCoderState& st, ReplaySet& set, uint32_t s, uin
             t.orient = uint8_t((g.orient + d) % N);
         }
         c.set_field(Field::Color);
-        const Mask& fp = renderer.stamp_footprint(t.set, t.tmpl, t.orient);
-        const FootprintMean m = footprint_mean(canvas, fp, int32_t(cand.x), int32_t(cand.y));
+        const FootprintMean m = footprint_mean(canvas, st.footprints.get(t.set, t.tmpl, t.orient), int32_t(cand.x), int32_t(cand.y));
         const Rgb8 p = m.covered ? m.mean : hd.background;
         // Residuals on the colour lattice of step q around the prediction: G, then R and B
         // predicted from G plus the prediction's R-G and B-G (SPEC.md 7.7.5).

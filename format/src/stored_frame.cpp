@@ -51,6 +51,15 @@ Status get_stroke(ByteCursor& c, Stroke& st, const DecodeContext& ctx, uint32_t 
         case 0: {
             st.kind = StrokeKind::Stamp;
             auto& t = st.stamp;
+            if (c.left() >= 15) {
+                // The common record, whole: one bounds check instead of one per field.
+                const uint8_t* q = c.here();
+                t.set = q[0]; t.tmpl = q[1]; t.orient = q[2];
+                t.x = int32_t(load_u32(q + 3));
+                t.y = int32_t(load_u32(q + 7));
+                t.color = Rgba8{q[11], q[12], q[13], q[14]};
+                return c.skip(15, "stamp stroke");
+            }
             SPT_TRY(c.u8(t.set, "stamp set")); SPT_TRY(c.u8(t.tmpl, "template")); SPT_TRY(c.u8(t.orient, "orientation"));
             SPT_TRY(c.i32(t.x, "x")); SPT_TRY(c.i32(t.y, "y"));
             return rgba(t.color);
