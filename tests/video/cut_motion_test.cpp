@@ -7,7 +7,6 @@
 #include "synthetic.hpp"
 #include "video/cut_detect.hpp"
 #include "video/motion.hpp"
-#include "video/roi_file.hpp"
 #include "video/video_paint.hpp"
 
 using namespace spt::video;
@@ -100,19 +99,4 @@ TEST(Fps, ParsesRationalsAndNtscRates) {
     EXPECT_FALSE(parse_fps("0").ok());
     EXPECT_FALSE(parse_fps("abc").ok());
     EXPECT_FALSE(parse_fps("24/0").ok());
-}
-
-TEST(Roi, ParsesTheJsonSchema) {
-    auto r = parse_roi_json(R"({"rois":[{"frames":"10-40","x":5,"y":6,"w":70,"h":80},{"frames":3,"x":0,"y":0,"w":1,"h":1}]})");
-    ASSERT_TRUE(r.ok()) << r.error().message;
-    ASSERT_EQ(r->size(), 2u);
-    EXPECT_EQ((*r)[0].first, 10);
-    EXPECT_EQ((*r)[0].last, 40);
-    EXPECT_EQ((*r)[0].w, 70);
-    EXPECT_EQ((*r)[1].first, 3);
-    EXPECT_EQ((*r)[1].last, 3);
-    auto bad = parse_roi_json(R"({"rois":[{"frames":"x","x":5}]})", "r.json");
-    ASSERT_FALSE(bad.ok());
-    EXPECT_NE(bad.error().message.find("r.json"), std::string::npos);
-    EXPECT_FALSE(parse_roi_json(R"({"rois":[)").ok());
 }

@@ -1,5 +1,6 @@
 #include "cli/paint_options.hpp"
 
+#include "io/roi_file.hpp"
 #include "paint/rate_control.hpp"
 
 #include <cerrno>
@@ -325,9 +326,15 @@ ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, s
     if (have_sets && !o.set_sizes.empty()) { err = "give --sets or --set-sizes, not both"; return ParseResult::Error; }
     o.cli_roi_count = o.rois.size();
     if (!o.roi_file.empty()) {
-        auto r = load_roi_file(o.roi_file);
-        if (!r) { err = r.error().message; return ParseResult::Error; }
-        o.rois.insert(o.rois.end(), r->begin(), r->end());
+        auto r = io::read_roi_file(o.roi_file);
+        if (!r) { err = "--roi-file " + r.error().message; return ParseResult::Error; }
+        for (const io::RoiRange& f : *r) {
+            RoiSpec s;
+            s.first_frame = f.first_frame;
+            s.last_frame = f.last_frame;
+            s.rect = paint::Rect{f.x, f.y, f.w, f.h};
+            o.rois.push_back(s);
+        }
     }
     return ParseResult::Ok;
 }

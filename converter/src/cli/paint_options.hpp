@@ -61,8 +61,4 @@ enum class ParseResult { Ok, Help, Error };
 ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& out, std::string& err);
 void print_paint_help(std::FILE* f);
 
-// Reads a --roi-file: {"rois":[{"x":..,"y":..,"w":..,"h":..,"frames":[first,last] or "A-B"}]}; "frames"
-// is optional (all frames). Errors name the file and the element.
-Result<std::vector<RoiSpec>> load_roi_file(const std::string& path);
-
 }  // namespace spt::cli

@@ -36,7 +36,7 @@ uint64_t frame_seed(uint64_t seed, uint32_t index) {
 
 Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptions& opts, uint32_t width,
                                                            uint32_t height, Rational fps,
-                                                           std::vector<RoiSpec> rois,
+                                                           std::vector<io::RoiRange> rois,
                                                            std::vector<std::pair<std::string, std::string>> metadata,
                                                            PaintFn painter) {
     if (width == 0 || height == 0) return make_error(Code::InvalidArgument, "video frames have no pixels");
@@ -105,8 +105,8 @@ paint::PaintOptions VideoEncoder::frame_paint_options(long source_number, uint32
     po.seed = frame_seed(opts_.paint.seed, index);
     po.lambda = opts_.paint.lambda * lambda_scale_;
     po.rois.clear();
-    for (const RoiSpec& r : rois_) {
-        if (source_number < r.first || source_number > r.last) continue;
+    for (const io::RoiRange& r : rois_) {
+        if (source_number < r.first_frame || source_number > r.last_frame) continue;
         po.rois.push_back({r.x, r.y, r.w, r.h});
     }
     for (const auto& r : opts_.paint.rois) po.rois.push_back(r);
@@ -309,7 +309,7 @@ Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, long source_numb
         r.seconds_cull = seconds_since(tc);
     }
     for (size_t i = 0; i < rois_.size(); ++i) {
-        if (source_number < rois_[i].first || source_number > rois_[i].last) continue;
+        if (source_number < rois_[i].first_frame || source_number > rois_[i].last_frame) continue;
         if (roi_used_[i].first < 0) roi_used_[i].first = next_index_;
         roi_used_[i].second = next_index_;
     }
@@ -340,7 +340,7 @@ Status VideoEncoder::finish() {
     if (finished_) return make_error(Code::BadState, "video encoder already finished");
     for (size_t i = 0; i < rois_.size(); ++i) {
         if (roi_used_[i].first < 0) continue;
-        const RoiSpec& s = rois_[i];
+        const io::RoiRange& s = rois_[i];
         Roi roi{uint32_t(roi_used_[i].first), uint32_t(roi_used_[i].second), uint32_t(s.x), uint32_t(s.y),
                 uint32_t(s.w), uint32_t(s.h)};
         Status st = writer_->add_roi(roi);

@@ -12,6 +12,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "io/roi_file.hpp"
 #include "paint/painter.hpp"
 #include "spt/render.hpp"
 #include "spt/result.hpp"
@@ -20,7 +21,6 @@
 #include "video/band_render.hpp"
 #include "video/cut_detect.hpp"
 #include "video/motion.hpp"
-#include "video/roi_file.hpp"
 #include "video/video_paint.hpp"
 
 namespace spt::video {
@@ -50,7 +50,7 @@ public:
     // Writes the stream header. `rois` use input frame numbers.
     static Result<std::unique_ptr<VideoEncoder>> create(const VideoPaintOptions& opts, uint32_t width,
                                                         uint32_t height, Rational fps,
-                                                        std::vector<RoiSpec> rois = {},
+                                                        std::vector<io::RoiRange> rois = {},
                                                         std::vector<std::pair<std::string, std::string>> metadata = {},
                                                         PaintFn painter = {});
     ~VideoEncoder();
@@ -89,7 +89,7 @@ private:
     std::unique_ptr<FlowEstimator> flow_;
     CutDetector cuts_;
 
-    std::vector<RoiSpec> rois_;
+    std::vector<io::RoiRange> rois_;
     std::vector<std::pair<long, long>> roi_used_;  // output frame range each ROI covered
     std::vector<Stroke> live_;
     Canvas canvas_;

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "video/frame_source.hpp"
-#include "video/roi_file.hpp"
+#include "io/roi_file.hpp"
 #include "video/video_encoder.hpp"
 
 namespace spt::video {
@@ -65,9 +65,9 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
     };
 
     if (opts.output.empty()) return make_error(Code::InvalidArgument, "no output file given");
-    std::vector<RoiSpec> rois;
+    std::vector<io::RoiRange> rois;
     if (!opts.roi_file.empty()) {
-        Result<std::vector<RoiSpec>> r = read_roi_file(opts.roi_file);
+        Result<std::vector<io::RoiRange>> r = io::read_roi_file(opts.roi_file);
         if (!r) return r.error();
         rois = std::move(*r);
     }

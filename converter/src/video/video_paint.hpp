@@ -33,7 +33,7 @@ struct VideoPaintOptions {
     std::string fps;                  // "24", "30000/1001", "29.97"; empty = container or 24
     bool skip_bad_frames = false;     // repeat the previous frame instead of failing
     int keyframe_interval = 100;      // at most this many frames from one key frame to the next
-    std::string roi_file;             // JSON {"rois":[{"frames":"10-40","x":..,"y":..,"w":..,"h":..}]}
+    std::string roi_file;             // JSON {"rois":[{"frames":"10-40","x":..,"y":..,"w":..,"h":..}]} (io/roi_file.hpp)
 
     // Cut detection: a cut when (pixel difference x edge difference) exceeds `cut_threshold`
     // times the mean of that product over the look-back window (the paper's detector).
