@@ -68,6 +68,16 @@ Status decode_stroke_stream(const uint8_t* p, size_t n, uint32_t count, const De
 Status decode_edit_stream(const uint8_t* p, size_t n, uint32_t removed_count, bool motion, uint16_t block_size,
                           const DecodeContext& ctx, Frame& out);
 
+class ByteCursor;
+// The counts and the edit stream that open every coding-1 and coding-2 body (SPEC.md 7.1):
+// reads them from `c`, decodes the removals and motion into `out`, and leaves `c` at the stroke
+// stream. `motion_bytes` is the length of that prefix.
+struct BodyPrefix {
+    uint32_t removed = 0, added = 0;
+    size_t motion_bytes = 0;
+};
+Status decode_body_prefix(FrameType type, ByteCursor& c, const DecodeContext& ctx, Frame& out, BodyPrefix& pre);
+
 // Coding 2 (SPEC.md 7.7). What the encoder needs besides the frame.
 struct ReplayEnv {
     const Header* header = nullptr;

@@ -126,9 +126,7 @@ Status decode_edit_stream(const uint8_t* p, size_t n, uint32_t removed_count, bo
     return {};
 }
 
-Status decode_range_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
-                         BodySplit* split) {
-    ByteCursor c(p, n, ctx.offset, ctx.where);
+Status decode_body_prefix(FrameType type, ByteCursor& c, const DecodeContext& ctx, Frame& out, BodyPrefix& pre) {
     uint32_t removed = 0, added = 0, edit_len = 0;
     uint8_t motion = 0;
     uint16_t block = 0;
@@ -152,7 +150,19 @@ Status decode_range_body(FrameType type, const uint8_t* p, size_t n, const Decod
         if (ctx.prev_live != kUnknownLive && ctx.prev_live - removed + added > ctx.limits.max_live_strokes)
             return c.error(Code::LimitExceeded, "live list would exceed the limit");
     }
-    const size_t motion_bytes = c.pos();
+    pre.removed = removed;
+    pre.added = added;
+    pre.motion_bytes = c.pos();
+    return {};
+}
+
+Status decode_range_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
+                         BodySplit* split) {
+    ByteCursor c(p, n, ctx.offset, ctx.where);
+    BodyPrefix pre;
+    SPT_TRY(decode_body_prefix(type, c, ctx, out, pre));
+    const uint32_t removed = pre.removed, added = pre.added;
+    const size_t motion_bytes = pre.motion_bytes;
     DecodeContext sc = ctx;
     sc.offset = c.offset();
     SPT_TRY(decode_stroke_stream(c.here(), c.left(), added, sc, out.added));

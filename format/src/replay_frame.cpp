@@ -173,30 +173,10 @@ Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const Deco
     if (!ctx.header || !ctx.renderer)
         return body_error(ctx, Code::InvalidArgument, "coding 2 needs the stream header and a renderer to decode");
     ByteCursor c(p, n, ctx.offset, ctx.where);
-    uint32_t removed = 0, added = 0, edit_len = 0;
-    uint8_t motion = 0;
-    uint16_t block = 0;
-    if (type == FrameType::Inter) {
-        SPT_TRY(c.varint(removed, "removed_count"));
-        SPT_TRY(c.varint(added, "added_count"));
-        SPT_TRY(c.u8(motion, "motion_present"));
-        if (motion > 1) return c.error(Code::Unsupported, "motion_present " + std::to_string(motion) + " is reserved");
-        if (motion) SPT_TRY(c.u16(block, "block_size"));
-        SPT_TRY(c.varint(edit_len, "edit_length"));
-        SPT_TRY(c.need(edit_len, "edit stream"));
-    } else {
-        SPT_TRY(c.varint(added, "added_count"));
-    }
-    if (ctx.stats) (*ctx.stats)[Field::Count] += 8.0 * double(c.pos());
-    if (type == FrameType::Inter) {
-        DecodeContext ec = ctx;
-        ec.offset = c.offset();
-        SPT_TRY(decode_edit_stream(c.here(), edit_len, removed, motion != 0, block, ec, out));
-        SPT_TRY(c.skip(edit_len, "edit stream"));
-        if (ctx.prev_live != kUnknownLive && ctx.prev_live - removed + added > ctx.limits.max_live_strokes)
-            return c.error(Code::LimitExceeded, "live list would exceed the limit");
-    }
-    const size_t motion_bytes = c.pos();
+    BodyPrefix pre;
+    SPT_TRY(decode_body_prefix(type, c, ctx, out, pre));
+    const uint32_t removed = pre.removed, added = pre.added;
+    const size_t motion_bytes = pre.motion_bytes;
     if (added == 0) return c.error(Code::Corrupt, "a coding-2 frame without strokes (such frames use coding 1)");
     if (added > ctx.limits.max_strokes_per_frame)
         return c.error(Code::LimitExceeded, std::to_string(added) + " strokes exceed the per-frame limit");
