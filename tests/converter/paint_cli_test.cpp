@@ -1,6 +1,7 @@
 // The built `spt paint` on real media: outputs exist and decode, usage errors exit 2, and the
 // file bytes do not depend on --threads.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -18,7 +19,12 @@ using namespace spt;
 namespace {
 
 const std::string kTool = SPT_TOOL;
-const fs::path kOut = fs::path(SPT_BINARY_DIR) / "paint_cli_test_out";
+// Per process: CTest runs every test case as its own process, several at once, and they all
+// write stdout.txt/stderr.txt here.
+const fs::path kOut = fs::path(SPT_BINARY_DIR) / ("paint_cli_test_out." + std::to_string(::getpid()));
+struct RemoveAtExit {
+    ~RemoveAtExit() { std::error_code ec; fs::remove_all(kOut, ec); }
+} remove_at_exit;
 
 int run(const std::string& args) {
     const std::string cmd = kTool + " paint " + args + " > " + (kOut / "stdout.txt").string() + " 2> " +

@@ -3,6 +3,7 @@
 // strokes give a higher PSNR, a PSNR target stops near it, and regions of interest are painted
 // finer than the rest.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -71,7 +72,7 @@ TEST(PaintRender, CanvasEqualsTheRendererBitForBit) {
 TEST(PaintRender, WrittenFileDecodesToTheCanvas) {
     const Model m = paint_test::model_or_synthetic(96, 64);
     Painting p = run(m, base_opts());
-    const std::string path = std::string(SPT_BINARY_DIR) + "/paint_render_test_roundtrip.spt";
+    const std::string path = std::string(SPT_BINARY_DIR) + "/paint_render_test_roundtrip." + std::to_string(::getpid()) + ".spt";
     StreamInfo info;
     info.header = p.setup.header;
     info.templates = p.setup.templates;

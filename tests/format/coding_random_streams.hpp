@@ -2,6 +2,8 @@
 // removals and motion) and small file helpers, shared by the container and coding tests.
 #pragma once
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -128,8 +130,12 @@ inline RandomStream make_random_stream(uint64_t seed, const StreamShapeOptions& 
     return rs;
 }
 
+// Per process: CTest runs every test case as its own process, several at once.
 inline std::string temp_path(const std::string& name) {
-    auto dir = std::filesystem::temp_directory_path() / "spt-format-tests";
+    static const auto dir = std::filesystem::temp_directory_path() / ("spt-format-tests-" + std::to_string(::getpid()));
+    static const struct RemoveAtExit {
+        ~RemoveAtExit() { std::error_code ec; std::filesystem::remove_all(dir, ec); }
+    } remove_at_exit;
     std::filesystem::create_directories(dir);
     return (dir / name).string();
 }

@@ -2,6 +2,7 @@
 // of strokes drawn from the generator (key and inter frames), with the fallback to coding 1 for
 // strokes that do not replay.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -104,7 +105,7 @@ std::vector<Stroke> replay_strokes(const StreamInfo& info, const ReplayInfo& ri,
 }
 
 std::string temp_path(const char* name) {
-    return (std::filesystem::temp_directory_path() / (std::string("spt_replay_") + name + ".spt")).string();
+    return (std::filesystem::temp_directory_path() / (std::string("spt_replay_") + std::to_string(::getpid()) + "_" + name + ".spt")).string();
 }
 
 TEST(ReplayCoding, KeyAndInterFramesRoundTripWithFallback) {
