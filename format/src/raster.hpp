@@ -99,23 +99,6 @@ void rasterize_curve(const CurveStroke& s, int64_t x0, int64_t y0, int64_t x1, i
 // Conservative pixel box of a curve (every covered pixel is inside it).
 void curve_box(const CurveStroke& s, int64_t& x0, int64_t& y0, int64_t& x1, int64_t& y1);
 
-// SPEC 8.6 compositing of rows of a coverage mask. Mask row j, columns
-// [max(lo[j], clip_lo), min(hi[j], clip_hi)), blend onto canvas row dst + j * dst_stride at
-// canvas columns x_offset + column, with the coverage at cov3 + j * cov_stride (three bytes a pixel, one per channel), colour
-// pattern3 (r, g, b repeated from column 0 of the span) and colour alpha a.
-struct RowBatch {
-    uint8_t* dst = nullptr;          // canvas row of mask row 0 (its first byte)
-    int32_t x_offset = 0;            // canvas column of mask column 0
-    size_t dst_stride = 0;           // bytes
-    const uint8_t* cov3 = nullptr;   // coverage of column 0 of row 0
-    size_t cov_stride = 0;           // bytes
-    const uint8_t* pattern3 = nullptr;
-    const uint16_t* lo = nullptr;    // per-row span [lo, hi) of non-zero coverage
-    const uint16_t* hi = nullptr;
-    uint32_t rows = 0;
-    int32_t clip_lo = 0, clip_hi = 0;  // mask columns inside the canvas
-    uint32_t a = 255;
-};
 // A coverage mask stored as one span of non-zero columns per row, three bytes a pixel (one
 // per channel), every span followed by kSpanPad zero bytes so that a short span may be
 // blended with one vector that runs past its end (where coverage 0 leaves pixels
@@ -170,8 +153,5 @@ enum class BlendIsa { Best, Scalar, Sse2, Avx2 };
 // fastest available). Not thread-safe; tests only.
 void force_span_isa(BlendIsa isa);
 bool blend_isa_available(BlendIsa isa);
-void blend_rows(const RowBatch& b, BlendIsa isa = BlendIsa::Best);
-// One row of n pixels, all of them in the canvas.
-void blend_row3(uint8_t* dst, const uint8_t* cov3, const uint8_t* pattern3, uint32_t n, uint32_t a);
 
 }  // namespace spt::raster

@@ -1,5 +1,5 @@
 // SPEC 8.6 compositing of span masks (raster.hpp: SpanMask, blend_spans), the hot loop of
-// whole-frame rendering. Same rule as raster_blend.cpp, in 16-bit lanes:
+// whole-frame rendering and of single strokes, in 16-bit lanes:
 //   alpha = (c * A + 127) / 255,  dst' = (dst * (255 - alpha) + src * alpha + 127) / 255
 // with x / 255 computed as mulhi_epu16(x, 0x8081) >> 7, i.e. (x * 32897) >> 23, which equals
 // x / 255 for every x <= 65152 (= 255 * 255 + 127, the largest value here; checked for every
@@ -242,6 +242,15 @@ const Kernels& kernels() {
 }  // namespace
 
 void force_span_isa(BlendIsa isa) { g_forced = isa; }
+
+bool blend_isa_available(BlendIsa isa) {
+#ifdef SPT_SPAN_X86
+    if (isa == BlendIsa::Avx2) return __builtin_cpu_supports("avx2");
+    return true;
+#else
+    return isa == BlendIsa::Scalar || isa == BlendIsa::Best;
+#endif
+}
 
 void span_mask_add_row(SpanMask& m, const uint8_t* cov, int64_t n, int64_t first) {
     int64_t lo = 0, hi = n;

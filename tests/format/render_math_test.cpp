@@ -24,83 +24,99 @@ TEST(RenderMath, StrokeAlphaEqualsSpecFormula) {
         for (uint32_t a = 0; a < 256; ++a) ASSERT_EQ(spt::raster::stroke_alpha(c, a), (c * a + 127u) / 255u);
 }
 
-// blend_row3 (the vectorised hot loop) equals blend8 for every (dst, src, alpha) with an
-// opaque colour, where alpha is the coverage itself.
-TEST(RenderMath, BlendRowOpaqueEqualsBlend8Exhaustively) {
-    std::vector<uint8_t> dst(256 * 3), cov3(256 * 3), pat(256 * 3);
-    for (uint32_t src = 0; src < 256; ++src) {
-        for (uint32_t k = 0; k < pat.size(); ++k) pat[k] = uint8_t(src);
-        for (uint32_t alpha = 0; alpha < 256; ++alpha) {
-            for (uint32_t i = 0; i < 256; ++i) {
-                dst[3 * i] = dst[3 * i + 1] = dst[3 * i + 2] = uint8_t(i);
-                cov3[3 * i] = cov3[3 * i + 1] = cov3[3 * i + 2] = uint8_t(alpha);
-            }
-            spt::raster::blend_row3(dst.data(), cov3.data(), pat.data(), 256, 255);
-            for (uint32_t i = 0; i < 256; ++i)
-                ASSERT_EQ(dst[3 * i], spt::blend8(uint8_t(i), uint8_t(src), alpha)) << i << " " << src << " " << alpha;
-        }
-    }
+// A one-row target over `px` (n pixels, plus the kernels' padding when `slack`).
+spt::raster::BlendTarget row_target(std::vector<uint8_t>& px, int64_t x0, int64_t x1, bool slack) {
+    spt::raster::BlendTarget t;
+    t.px = px.data() + 3 * size_t(x0);
+    t.stride = px.size();
+    t.x0 = x0;
+    t.x1 = x1;
+    t.y0 = 0;
+    t.y1 = 1;
+    t.slack = slack;
+    return t;
 }
 
-// With a translucent colour the row kernel first forms alpha = (c*A + 127) / 255: every
-// (coverage, A) pair, against a sweep of dst/src values.
-TEST(RenderMath, BlendRowTranslucentEqualsSpec) {
-    std::vector<uint8_t> dst(256 * 3), cov3(256 * 3), pat(256 * 3);
-    for (uint32_t a = 0; a < 255; ++a) {
-        for (uint32_t src = 0; src < 256; src += 15) {
-            for (uint32_t k = 0; k < pat.size(); ++k) pat[k] = uint8_t(src + k);
-            for (uint32_t i = 0; i < 256 * 3; ++i) {
-                dst[i] = uint8_t(i * 7 + a);
-                cov3[i] = uint8_t(i / 3);
+// The span kernels (the hot loop of render() and draw()) equal blend8 for every
+// (dst, src, coverage) with an opaque colour, on every ISA the CPU has.
+TEST(RenderMath, SpanKernelsOpaqueEqualBlend8Exhaustively) {
+    using spt::raster::BlendIsa;
+    for (BlendIsa isa : {BlendIsa::Scalar, BlendIsa::Sse2, BlendIsa::Avx2}) {
+        if (!spt::raster::blend_isa_available(isa)) continue;
+        spt::raster::force_span_isa(isa);
+        std::vector<uint8_t> dst(256 * 3 + spt::raster::kSpanPad), cov(256);
+        for (uint32_t src = 0; src < 256; ++src)
+            for (uint32_t alpha = 1; alpha < 256; ++alpha) {
+                for (uint32_t i = 0; i < 256; ++i) {
+                    dst[3 * i] = dst[3 * i + 1] = dst[3 * i + 2] = uint8_t(i);
+                    cov[i] = uint8_t(alpha);
+                }
+                const auto t = row_target(dst, 0, 256, (src + alpha) % 2 == 0);
+                spt::raster::blend_cov_row(t, 0, 0, cov.data(), 256, spt::Rgba8{uint8_t(src), uint8_t(src), uint8_t(src), 255});
+                for (uint32_t i = 0; i < 256; ++i)
+                    ASSERT_EQ(dst[3 * i], spt::blend8(uint8_t(i), uint8_t(src), alpha))
+                        << "isa " << int(isa) << " dst " << i << " src " << src << " alpha " << alpha;
             }
+    }
+    spt::raster::force_span_isa(BlendIsa::Best);
+}
+
+// With a translucent colour the kernels first form alpha = (c*A + 127) / 255: every
+// (coverage, A) pair, against a sweep of dst/src values.
+TEST(RenderMath, SpanKernelsTranslucentEqualSpec) {
+    std::vector<uint8_t> dst(256 * 3 + spt::raster::kSpanPad), cov(256);
+    for (uint32_t i = 0; i < 256; ++i) cov[i] = uint8_t(i);
+    for (uint32_t a = 1; a < 255; ++a)
+        for (uint32_t src = 0; src < 256; src += 15) {
+            const spt::Rgba8 c{uint8_t(src), uint8_t(src + 1), uint8_t(src + 2), uint8_t(a)};
+            for (uint32_t i = 0; i < 256 * 3; ++i) dst[i] = uint8_t(i * 7 + a);
             const std::vector<uint8_t> before = dst;
-            spt::raster::blend_row3(dst.data(), cov3.data(), pat.data(), 256, a);
+            spt::raster::blend_cov_row(row_target(dst, 0, 256, false), 0, 0, cov.data(), 256, c);
+            const uint8_t rgb[3] = {c.r, c.g, c.b};
             for (uint32_t i = 0; i < 256 * 3; ++i) {
-                const uint32_t alpha = (cov3[i] * a + 127u) / 255u;
-                ASSERT_EQ(dst[i], (before[i] * (255u - alpha) + pat[i] * alpha + 127u) / 255u);
+                const uint32_t alpha = (cov[i / 3] * a + 127u) / 255u;
+                ASSERT_EQ(dst[i], spt::blend8(before[i], rgb[i % 3], alpha)) << "a " << a << " i " << i;
             }
         }
-    }
 }
 
 // Every vector path (scalar, SSE2, AVX2 when the CPU has it) on every span length up to 120
-// pixels, with clipping on both sides: identical to blend8, and nothing outside the span moves.
-TEST(RenderMath, EveryBlendPathEqualsBlend8OnEverySpanLength) {
+// pixels, clipped on both sides, with and without slack: identical to blend8, and nothing
+// outside the written pixels moves.
+TEST(RenderMath, EverySpanPathEqualsBlend8OnEverySpanLength) {
     using spt::raster::BlendIsa;
     uint32_t seed = 1;
     auto rnd = [&]() { seed = seed * 1103515245u + 12345u; return uint8_t(seed >> 16); };
     for (BlendIsa isa : {BlendIsa::Scalar, BlendIsa::Sse2, BlendIsa::Avx2, BlendIsa::Best}) {
         if (!spt::raster::blend_isa_available(isa)) continue;
-        for (uint16_t n = 1; n <= 120; ++n)
-            for (uint32_t a : {255u, 200u, 1u}) {
-                std::vector<uint8_t> dst(3 * 140), cov3(3 * 140), pat(3 * 140);
-                for (auto& v : dst) v = rnd();
-                for (size_t i = 0; i < 140; ++i) cov3[3 * i] = cov3[3 * i + 1] = cov3[3 * i + 2] = rnd();
-                for (size_t i = 0; i < pat.size(); ++i) pat[i] = uint8_t(i % 3 == 0 ? 17 : i % 3 == 1 ? 200 : 99);
-                const uint16_t lo = 3, hi = uint16_t(3 + n);
-                spt::raster::RowBatch b;
-                b.dst = dst.data();
-                b.x_offset = 5;
-                b.cov3 = cov3.data();
-                b.pattern3 = pat.data();
-                b.lo = &lo;
-                b.hi = &hi;
-                b.rows = 1;
-                b.clip_lo = n > 8 ? 4 : 0;            // clip the first pixel of longer spans
-                b.clip_hi = n > 16 ? hi - 2 : 1000;    // and the last two
-                b.a = a;
-                std::vector<uint8_t> expect = dst;
-                const int32_t from = std::max<int32_t>(lo, b.clip_lo), to = std::min<int32_t>(hi, b.clip_hi);
-                for (int32_t c = from; c < to; ++c)
-                    for (int k = 0; k < 3; ++k) {
-                        const uint32_t al = (cov3[3 * size_t(c) + size_t(k)] * a + 127u) / 255u;
-                        uint8_t& d = expect[3 * size_t(5 + c) + size_t(k)];
-                        d = spt::blend8(d, pat[3 * size_t(c - from) + size_t(k)], al);
+        spt::raster::force_span_isa(isa);
+        for (int64_t n = 1; n <= 120; ++n)
+            for (uint8_t a : {uint8_t(255), uint8_t(200), uint8_t(1)})
+                for (bool slack : {false, true}) {
+                    std::vector<uint8_t> dst(3 * 140 + spt::raster::kSpanPad);
+                    std::vector<uint8_t> cov{};
+                    cov.resize(size_t(n));
+                    for (auto& v : dst) v = rnd();
+                    for (auto& v : cov) v = uint8_t(rnd() | 1);  // no zero ends: the span is all of it
+                    const spt::Rgba8 c{17, 200, 99, a};
+                    const int64_t x = 5, x0 = n > 8 ? 6 : 0, x1 = n > 16 ? x + n - 2 : 140;
+                    std::vector<uint8_t> expect = dst;
+                    for (int64_t p = std::max(x, x0); p < std::min(x + n, x1); ++p) {
+                        const uint32_t al = (cov[size_t(p - x)] * uint32_t(a) + 127u) / 255u;
+                        const uint8_t rgb[3] = {c.r, c.g, c.b};
+                        for (int k = 0; k < 3; ++k) {
+                            uint8_t& d = expect[3 * size_t(p) + size_t(k)];
+                            d = spt::blend8(d, rgb[k], al);
+                        }
                     }
-                spt::raster::blend_rows(b, isa);
-                ASSERT_EQ(dst, expect) << "isa " << int(isa) << " n " << n << " a " << a;
-            }
+                    spt::raster::blend_cov_row(row_target(dst, x0, x1, slack), x, 0, cov.data(), n, c);
+                    // With slack the kernels may rewrite the padding past x1 (nobody reads it).
+                    const size_t checked = slack ? 3 * size_t(x1) : dst.size();
+                    ASSERT_TRUE(std::equal(dst.begin(), dst.begin() + long(checked), expect.begin()))
+                        << "isa " << int(isa) << " n " << n << " a " << int(a) << " slack " << slack;
+                }
     }
+    spt::raster::force_span_isa(BlendIsa::Best);
 }
 
 }  // namespace
