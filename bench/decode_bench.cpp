@@ -180,6 +180,8 @@ int main(int argc, char** argv) {
         const std::string key = std::filesystem::path(image).stem().string() + "_" + std::to_string(kW) + "x" +
                                 std::to_string(kH) + "_" + std::to_string(max_strokes);
         const std::string cached = cache + "/decode_bench_" + key + ".c2.spt";
+        std::error_code mkdir_error;
+        std::filesystem::create_directories(cache, mkdir_error);  // a new --cache folder
         std::vector<uint8_t> c2 = read_bytes(cached);
         bool have = false;
         if (!c2.empty()) {
@@ -191,7 +193,7 @@ int main(int argc, char** argv) {
                 if (f && f->replay.present) { frame = std::move(*f); have = true; }
             }
         }
-        if (!have) std::fprintf(stderr, "cache %s: %zu bytes, not usable\n", cached.c_str(), c2.size());
+        if (!have && !c2.empty()) std::fprintf(stderr, "cache %s: %zu bytes, not usable\n", cached.c_str(), c2.size());
         if (!have) {
             auto img = io::read_image(image);
             if (!img) { std::fprintf(stderr, "%s\n", img.error().message.c_str()); return 1; }
