@@ -229,8 +229,11 @@ int cmd_info(int argc, char** argv) {
         std::printf("\nfields (frame bodies)\n");
         for (size_t i = 0; i < kFieldCount; ++i) row(field_name(Field(i)), fs.bits[i] / 8.0);
     }
-    if (!frames.empty() && fps > 0)
+    // A still has no meaningful bit rate: give bits per pixel instead.
+    if (frames.size() > 1 && fps > 0)
         std::printf("\nbit rate    %.1f kbit/s\n", double(sec.total) * 8.0 / 1000.0 / (double(frames.size()) / fps));
+    else if (frames.size() == 1 && h.width && h.height)
+        std::printf("\nbits/pixel  %.4f\n", double(sec.total) * 8.0 / (double(h.width) * double(h.height)));
     for (const auto& w : r.warnings()) std::printf("warning: %s\n", io::describe_error(path, w).c_str());
     if (list) {
         std::printf("\n%7s %5s %6s %12s %9s %9s %8s %8s %8s\n", "frame", "type", "coding", "offset", "bytes",
