@@ -11,7 +11,8 @@ build="${SPT_BUILD_DIR:-build}"
 core_pkgs=(build-essential cmake ninja-build pkg-config git python3
            libopenimageio-dev openimageio-tools libopencv-dev libopenexr-dev)
 test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy
-           blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils)
+           blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils
+           libjxl-tools webp optipng)   # the last three: bench/ comparisons only
 
 install_pkgs() {
   local missing=()
