@@ -77,6 +77,11 @@ struct BodyPrefix {
     size_t motion_bytes = 0;
 };
 Status decode_body_prefix(FrameType type, ByteCursor& c, const DecodeContext& ctx, Frame& out, BodyPrefix& pre);
+// The encoder's side: writes f's counts and edit stream (SPEC.md 7.1) into `head`. The edit
+// stream's bits go to `stats` per field, the rest as Field::Count. Returns the prefix length
+// that counts as motion bytes (0 for key frames).
+class ByteSink;
+size_t encode_body_prefix(const Frame& f, ByteSink& head, FieldStats* stats);
 
 // Coding 2 (SPEC.md 7.7). What the encoder needs besides the frame.
 struct ReplayEnv {

@@ -43,27 +43,31 @@ void encode_edits(const Frame& f, std::vector<uint8_t>& out, FieldStats* stats) 
 
 }  // namespace
 
+size_t encode_body_prefix(const Frame& f, ByteSink& head, FieldStats* stats) {
+    if (f.type == FrameType::Key) {
+        head.varint(uint32_t(f.added.size()));
+        if (stats) (*stats)[Field::Count] += 8.0 * double(head.size());
+        return 0;
+    }
+    const size_t start = head.size();
+    std::vector<uint8_t> edits;
+    encode_edits(f, edits, stats);
+    head.varint(uint32_t(f.removed.size()));
+    head.varint(uint32_t(f.added.size()));
+    head.u8(f.motion.empty() ? 0 : 1);
+    if (!f.motion.empty()) head.u16(f.motion.block_size);
+    head.varint(uint32_t(edits.size()));
+    head.raw(edits.data(), edits.size());
+    // The edit stream's bits were counted per field by its encoder; the rest are counts.
+    if (stats) (*stats)[Field::Count] += 8.0 * double(head.size() - start - edits.size());
+    return head.size() - start;
+}
+
 void encode_range_body(const Frame& f, const StreamShape& shape, std::vector<uint8_t>& out, BodySplit* split,
                        FieldStats* stats) {
     const size_t start = out.size();
     ByteSink head;
-    size_t motion_bytes = 0, edit_bytes = 0;
-    if (f.type == FrameType::Key) {
-        head.varint(uint32_t(f.added.size()));
-    } else {
-        std::vector<uint8_t> edits;
-        encode_edits(f, edits, stats);
-        head.varint(uint32_t(f.removed.size()));
-        head.varint(uint32_t(f.added.size()));
-        head.u8(f.motion.empty() ? 0 : 1);
-        if (!f.motion.empty()) head.u16(f.motion.block_size);
-        head.varint(uint32_t(edits.size()));
-        head.raw(edits.data(), edits.size());
-        edit_bytes = edits.size();
-        motion_bytes = head.size();
-    }
-    // The edit stream's bits were counted per field by its encoder; the rest are counts.
-    if (stats) (*stats)[Field::Count] += 8.0 * double(head.size() - edit_bytes);
+    const size_t motion_bytes = encode_body_prefix(f, head, stats);
     out.insert(out.end(), head.bytes().begin(), head.bytes().end());
     encode_strokes(f.added, shape, out, stats);
     if (split) {

@@ -118,30 +118,8 @@ bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_
     if (!start_canvas(f, f.type, hd, *env.renderer, env.live, canvas)) return false;
 
     FieldStats fs;
-    std::vector<uint8_t> edits;
-    if (f.type == FrameType::Inter && (!f.removed.empty() || !f.motion.empty())) {
-        RangeEncoder enc(edits, &fs);
-        EditCoderState est;
-        Frame copy;
-        copy.removed = f.removed;
-        copy.motion = f.motion;
-        SyntaxError err;
-        code_edits(enc, est, copy, uint32_t(f.removed.size()), ~uint64_t(0), err);
-        enc.finish();
-    }
     ByteSink head;
-    if (f.type == FrameType::Key) {
-        head.varint(uint32_t(f.added.size()));
-    } else {
-        head.varint(uint32_t(f.removed.size()));
-        head.varint(uint32_t(f.added.size()));
-        head.u8(f.motion.empty() ? 0 : 1);
-        if (!f.motion.empty()) head.u16(f.motion.block_size);
-        head.varint(uint32_t(edits.size()));
-        head.raw(edits.data(), edits.size());
-    }
-    const size_t motion_bytes = f.type == FrameType::Inter ? head.size() : 0;
-    fs[Field::Count] += 8.0 * double(head.size() - edits.size());
+    const size_t motion_bytes = encode_body_prefix(f, head, &fs);
     head.u64(f.replay.seed);
     head.u8(f.replay.random_orientation ? kRandomOrientation : 0);
     head.u8(f.replay.color_step);
