@@ -1,6 +1,8 @@
 // Strict recursive-descent JSON parser with line tracking and hard limits on depth and size.
 #include "spt_import/json.hpp"
 
+#include "text_cursor.hpp"
+
 #include <charconv>
 #include <cmath>
 
@@ -26,9 +28,9 @@ const char* type_name(Type t) {
 
 namespace {
 
-class Parser {
+class Parser : text::Cursor<ParseLimits> {
 public:
-    Parser(std::string_view t, const std::string& src, const ParseLimits& l) : s_(t), src_(src), lim_(l) {}
+    Parser(std::string_view t, const std::string& src, const ParseLimits& l) : Cursor(t, src, l) {}
 
     Result<Value> run() {
         if (s_.size() > lim_.max_bytes)
@@ -48,18 +50,6 @@ public:
     }
 
 private:
-    std::string_view s_;
-    const std::string& src_;
-    ParseLimits lim_;
-    size_t pos_ = 0;
-    uint32_t line_ = 1;
-    size_t count_ = 0;
-    Error err_;
-
-    bool fail(const std::string& what) {
-        err_ = make_error(Code::Corrupt, src_ + ":" + std::to_string(line_) + ": " + what, pos_);
-        return false;
-    }
     void skip_ws() {
         while (pos_ < s_.size()) {
             char c = s_[pos_];
@@ -76,10 +66,7 @@ private:
 
     bool value(Value& v, uint32_t depth) {
         if (depth > lim_.max_depth) return fail("nesting deeper than " + std::to_string(lim_.max_depth));
-        if (++count_ > lim_.max_values) {
-            err_ = make_error(Code::LimitExceeded, src_ + ":" + std::to_string(line_) + ": too many JSON values", pos_);
-            return false;
-        }
+        if (++count_ > lim_.max_values) return fail("too many JSON values", Code::LimitExceeded);
         skip_ws();
         if (pos_ >= s_.size()) return fail("unexpected end of document");
         v.line = line_;

@@ -3,6 +3,8 @@
 // attacks), depth and element counts are bounded.
 #include "spt_import/xml.hpp"
 
+#include "text_cursor.hpp"
+
 #include <cctype>
 #include <cstring>
 
@@ -25,9 +27,9 @@ namespace {
 bool is_name_start(unsigned char c) { return std::isalpha(c) || c == '_' || c == ':' || c >= 0x80; }
 bool is_name_char(unsigned char c) { return is_name_start(c) || std::isdigit(c) || c == '-' || c == '.'; }
 
-class Parser {
+class Parser : text::Cursor<ParseLimits> {
 public:
-    Parser(std::string_view t, const std::string& src, const ParseLimits& l) : s_(t), src_(src), lim_(l) {}
+    Parser(std::string_view t, const std::string& src, const ParseLimits& l) : Cursor(t, src, l) {}
 
     Result<Element> run() {
         if (s_.size() > lim_.max_bytes) return make_error(Code::LimitExceeded, src_ + ": XML document larger than the limit");
@@ -42,18 +44,6 @@ public:
     }
 
 private:
-    std::string_view s_;
-    const std::string& src_;
-    ParseLimits lim_;
-    size_t pos_ = 0;
-    uint32_t line_ = 1;
-    size_t count_ = 0;
-    Error err_;
-
-    bool fail(const std::string& what) {
-        err_ = make_error(Code::Corrupt, src_ + ":" + std::to_string(line_) + ": " + what, pos_);
-        return false;
-    }
     void advance(size_t n) {
         for (size_t i = 0; i < n && pos_ < s_.size(); ++i, ++pos_)
             if (s_[pos_] == '\n') ++line_;
@@ -139,10 +129,7 @@ private:
     }
     bool element(Element& e, uint32_t depth) {
         if (depth > lim_.max_depth) return fail("elements nested deeper than " + std::to_string(lim_.max_depth));
-        if (++count_ > lim_.max_elements) {
-            err_ = make_error(Code::LimitExceeded, src_ + ":" + std::to_string(line_) + ": too many XML elements", pos_);
-            return false;
-        }
+        if (++count_ > lim_.max_elements) return fail("too many XML elements", Code::LimitExceeded);
         e.line = line_;
         advance(1);  // '<'
         if (!name(e.name)) return false;
