@@ -71,6 +71,22 @@ Status apply_frame(std::vector<Stroke>& live, const Frame& frame, const Header& 
                 case StrokeKind::Curve:
                     for (auto& p : s.curve.points) ok = ok && mover.move(p.x, p.y);
                     break;
+                case StrokeKind::Polygon: {
+                    // A polygon moves rigidly, by the vector of its first vertex's block
+                    // (SPEC.md 5), so that motion never folds its outline.
+                    if (s.polygon.points.empty()) break;
+                    const auto [dx, dy] = mover.at(s.polygon.points[0].x, s.polygon.points[0].y);
+                    for (auto& p : s.polygon.points) {
+                        const int64_t nx = int64_t(p.x) + dx, ny = int64_t(p.y) + dy;
+                        if (nx < -detail::kMaxCoord || nx > detail::kMaxCoord || ny < -detail::kMaxCoord || ny > detail::kMaxCoord) {
+                            ok = false;
+                            break;
+                        }
+                        p.x = int32_t(nx);
+                        p.y = int32_t(ny);
+                    }
+                    break;
+                }
             }
             if (!ok)
                 return make_error(Code::Corrupt, where + ": motion moves stroke " + std::to_string(i) +

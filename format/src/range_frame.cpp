@@ -21,6 +21,7 @@ void encode_strokes(const std::vector<Stroke>& strokes, const StreamShape& shape
     auto st = std::make_unique<StrokeCoderState>(shape);
     Limits unlimited;
     unlimited.max_curve_points = 0xFFFFFFFFu;
+    unlimited.max_polygon_vertices = 0xFFFFFFFFu;
     SyntaxError err;
     for (const Stroke& s : strokes) {
         Stroke copy = s;  // code_stroke assigns coded values back

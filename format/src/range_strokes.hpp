@@ -36,14 +36,16 @@ struct PosModel {
 struct StrokeCoderState {
     StreamShape shape;
     // contexts
-    uint16_t kind0[3], kind1[3];
+    // Indexed by the previous kind. Index 3 (after a polygon) and kind2 only occur in format
+    // 1.2 streams, so 1.0/1.1 streams code exactly as before.
+    uint16_t kind0[4], kind1[4], kind2[4];
     uint16_t same_set;
     BitTree set_tree;
     std::array<BitTree, 16> tmpl;     // stamp template, by set
     BitTree affine_tmpl;
     uint16_t same_orient[16];
     std::array<BitTree, 16> orient;   // by set
-    PosModel pos[3][2];               // [stamp, affine, curve][x, y]
+    PosModel pos[4][2];               // [stamp, affine, curve, polygon][x, y]
     Res8Model color[3][4];            // [G, R-G, B-G][class]
     uint16_t opaque;
     BitTree alpha;
@@ -52,17 +54,28 @@ struct StrokeCoderState {
     BitTree matrix_shift;
     UIntModel points;
     SIntModel width0, dx, dy, dw;
+    // polygons (format 1.2, SPEC.md 7.4 step 5)
+    UIntModel poly_points;
+    uint16_t poly_same_aa;
+    BitTree poly_aa;
+    BitTree poly_shift;
+    uint16_t poly_second;
+    SIntModel poly_dx[2], poly_dy[2];  // by prediction mode
     // predictors
     int prev_kind = 0;
     int prev_set = 0;
     int prev_orient[16] = {};
     Rgb8 prev_color{128, 128, 128};
     int64_t prev_width0 = 0;
+    uint32_t prev_poly_aa = 0;
     uint32_t grid_w = 0, grid_h = 0;
     std::vector<uint32_t> grid;       // 0 = empty, else 0x01RRGGBB
 
     explicit StrokeCoderState(const StreamShape& sh) : shape(sh) {
-        for (int i = 0; i < 3; ++i) kind0[i] = kind1[i] = kProbInit;
+        for (int i = 0; i < 4; ++i) kind0[i] = kind1[i] = kind2[i] = kProbInit;
+        poly_same_aa = poly_second = kProbInit;
+        poly_aa.reset(5);
+        poly_shift.reset(3);
         same_set = opaque = kProbInit;
         set_tree.reset(4);
         const int tb = sh.templates ? bit_length(sh.templates - 1) : 0;
@@ -189,16 +202,92 @@ SPT_CODER_INLINE bool code_affine_matrix(C& c, StrokeCoderState& st, AffineStrok
     return true;
 }
 
+// Polygon geometry (SPEC.md 7.4, polygon 5): vertex count, supersampling, first vertex, then
+// the differences between consecutive vertices in units of 2^shift, each predicted as zero
+// (mode 0) or as the previous difference (mode 1, smooth outlines such as 20-gon ellipses).
+// The encoder picks the mode with the smaller sum of residual magnitudes.
+template <class C>
+SPT_CODER_INLINE bool code_polygon(C& c, StrokeCoderState& st, PolygonStroke& pg, const Limits& lim, SyntaxError& err) {
+    const StreamShape& sh = st.shape;
+    c.set_field(Field::Geometry);
+    const uint64_t n = code_uint(c, st.poly_points, pg.points.size() >= 3 ? pg.points.size() - 3 : 0) + 3;
+    if (n > lim.max_polygon_vertices) { err.set("polygon of " + std::to_string(n) + " vertices exceeds the limit"); return false; }
+    uint32_t aa = st.prev_poly_aa;
+    if (c.bit(st.poly_same_aa, pg.supersample != st.prev_poly_aa ? 1 : 0)) {
+        aa = code_tree(c, st.poly_aa, pg.supersample);
+        if (aa == st.prev_poly_aa || aa == 1 || aa > 16) { err.set("polygon supersampling " + std::to_string(aa) + " is invalid"); return false; }
+    }
+    pg.supersample = uint8_t(aa);
+    st.prev_poly_aa = aa;
+    pg.points.resize(size_t(n));  // the encoder's size already; the decoder's new
+    auto& p0 = pg.points[0];
+    c.set_field(Field::Position);
+    p0.x = int32_t(code_position(c, st.pos[3][0], p0.x, sh.width, err));
+    p0.y = int32_t(code_position(c, st.pos[3][1], p0.y, sh.height, err));
+    if (err.bad) return false;
+    c.set_field(Field::Geometry);
+    // Encoder: the largest shift that divides every difference, and the cheaper prediction.
+    uint32_t shift = 4;
+    int mode = 0;
+    if constexpr (!C::kDecoding) {
+        for (size_t i = 1; i < pg.points.size(); ++i) {
+            const int64_t dx = int64_t(pg.points[i].x) - pg.points[i - 1].x, dy = int64_t(pg.points[i].y) - pg.points[i - 1].y;
+            while (shift > 0 && ((dx | dy) & ((int64_t(1) << shift) - 1)) != 0) --shift;
+        }
+        uint64_t cost[2] = {0, 0};
+        int64_t px = 0, py = 0;
+        for (size_t i = 1; i < pg.points.size(); ++i) {
+            const int64_t ex = (int64_t(pg.points[i].x) - pg.points[i - 1].x) >> shift;
+            const int64_t ey = (int64_t(pg.points[i].y) - pg.points[i - 1].y) >> shift;
+            cost[0] += uint64_t(bit_length(uint64_t(ex < 0 ? -ex : ex))) + uint64_t(bit_length(uint64_t(ey < 0 ? -ey : ey)));
+            const int64_t rx = ex - px, ry = ey - py;
+            cost[1] += uint64_t(bit_length(uint64_t(rx < 0 ? -rx : rx))) + uint64_t(bit_length(uint64_t(ry < 0 ? -ry : ry)));
+            px = ex; py = ey;
+        }
+        mode = cost[1] < cost[0] ? 1 : 0;
+    }
+    shift = code_tree(c, st.poly_shift, shift);
+    if (shift > 4) { err.set("polygon shift " + std::to_string(shift) + " is reserved"); return false; }
+    mode = c.bit(st.poly_second, mode);
+    bool could_shift_more = shift < 4;
+    int64_t px = 0, py = 0;  // previous difference, in units of 2^shift
+    for (size_t i = 1; i < pg.points.size(); ++i) {
+        const auto& a = pg.points[i - 1];
+        auto& b = pg.points[i];
+        const int64_t ex = C::kDecoding ? 0 : (int64_t(b.x) - a.x) >> shift;
+        const int64_t ey = C::kDecoding ? 0 : (int64_t(b.y) - a.y) >> shift;
+        const int64_t qx = mode ? px : 0, qy = mode ? py : 0;
+        const int64_t vx = qx + code_sint(c, st.poly_dx[mode], ex - qx);
+        const int64_t vy = qy + code_sint(c, st.poly_dy[mode], ey - qy);
+        if ((vx | vy) & 1) could_shift_more = false;
+        const int64_t x = a.x + vx * (int64_t(1) << shift), y = a.y + vy * (int64_t(1) << shift);
+        if (x < -kMaxCoord || x > kMaxCoord || y < -kMaxCoord || y > kMaxCoord) { err.set("polygon vertex outside +-2^24"); return false; }
+        b.x = int32_t(x); b.y = int32_t(y);
+        px = vx; py = vy;
+    }
+    if (could_shift_more) { err.set("polygon shift is not the largest"); return false; }
+    return true;
+}
+
 // One stroke (SPEC.md 7.4.2). Returns false and fills `err` on an invalid coded value.
 template <class C>
 SPT_CODER_INLINE bool code_stroke(C& c, StrokeCoderState& st, Stroke& s, const Limits& lim, SyntaxError& err) {
     const StreamShape& sh = st.shape;
     c.set_field(Field::Kind);
     int kind = 0;
-    if (c.bit(st.kind0[st.prev_kind], s.kind != StrokeKind::Stamp ? 1 : 0))
-        kind = c.bit(st.kind1[st.prev_kind], s.kind == StrokeKind::Curve ? 1 : 0) ? 2 : 1;
+    if (c.bit(st.kind0[st.prev_kind], s.kind != StrokeKind::Stamp ? 1 : 0)) {
+        kind = c.bit(st.kind1[st.prev_kind], s.kind == StrokeKind::Curve || s.kind == StrokeKind::Polygon ? 1 : 0) ? 2 : 1;
+        if (kind == 2 && sh.has_polygons()) kind = c.bit(st.kind2[st.prev_kind], s.kind == StrokeKind::Polygon ? 1 : 0) ? 3 : 2;
+    }
     st.prev_kind = kind;
     s.kind = StrokeKind(kind);
+
+    if (kind == 3) {
+        auto& pg = s.polygon;
+        if (!code_polygon(c, st, pg, lim, err)) return false;
+        code_color(c, st, pg.color, pg.points[0].x, pg.points[0].y, 0, err);
+        return !err.bad;
+    }
 
     if (kind == 0) {
         auto& t = s.stamp;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 
+#include "raster_polygon.hpp"
 #include "render_impl.hpp"
 
 namespace spt {
@@ -38,9 +39,7 @@ Error bad(std::string msg) { return make_error(Code::InvalidArgument, std::move(
 
 bool in_range(int64_t v, int64_t lim) { return v >= -lim && v <= lim; }
 
-Rgba8 colour_of(const Stroke& s) {
-    return s.kind == StrokeKind::Stamp ? s.stamp.color : s.kind == StrokeKind::Affine ? s.affine.color : s.curve.color;
-}
+Rgba8 colour_of(const Stroke& s) { return s.color(); }
 
 std::vector<uint8_t>& scratch_cov() {
     thread_local std::vector<uint8_t> v;
@@ -85,6 +84,16 @@ Status RendererImpl::check(const Stroke& s) const {
             }
             return {};
         }
+        case StrokeKind::Polygon: {
+            const PolygonStroke& t = s.polygon;
+            if (t.points.size() < 3) return bad("polygon stroke: " + std::to_string(t.points.size()) + " vertices, need 3 or more");
+            if (t.supersample == 1 || t.supersample > 16)
+                return bad("polygon stroke: supersampling " + std::to_string(t.supersample) + " is not 0 or 2..16");
+            for (size_t i = 0; i < t.points.size(); ++i)
+                if (!in_range(t.points[i].x, kMaxCoord) || !in_range(t.points[i].y, kMaxCoord))
+                    return bad("polygon stroke: vertex " + std::to_string(i) + " outside +-2^24");
+            return {};
+        }
     }
     return bad("stroke of unknown kind " + std::to_string(int(s.kind)));
 }
@@ -115,6 +124,7 @@ void RendererImpl::stroke_box(const Stroke& s, int64_t& x0, int64_t& y0, int64_t
             return;
         }
         case StrokeKind::Curve: curve_box(s.curve, x0, y0, x1, y1); return;
+        case StrokeKind::Polygon: polygon_box(s.polygon, x0, y0, x1, y1); return;
     }
 }
 
@@ -145,6 +155,27 @@ void RendererImpl::draw_curve(const BlendTarget& t, const CurveStroke& s) const 
     for (int64_t y = y0; y <= y1; ++y) blend_cov_row(t, x0, y, &cov[size_t((y - y0) * w)], w, s.color);
 }
 
+namespace {
+
+// Polygons (SPEC 8.8) are rasterised row by row, clipped to t, and composited with
+// blend_cov_row; nothing is cached (a polygon is drawn once per frame).
+void draw_polygon(const BlendTarget& t, const PolygonStroke& s) {
+    int64_t x0, y0, x1, y1;
+    polygon_box(s, x0, y0, x1, y1);
+    x0 = std::max<int64_t>(x0, t.x0); x1 = std::min<int64_t>(x1, t.x1 - 1);
+    y0 = std::max<int64_t>(y0, t.y0); y1 = std::min<int64_t>(y1, t.y1 - 1);
+    if (x0 > x1 || y0 > y1) return;
+    auto& cov = scratch_cov();
+    if (cov.size() < size_t(x1 - x0 + 1)) cov.resize(size_t(x1 - x0 + 1));
+    PolygonRaster r(s);
+    for (int64_t y = y0; y <= y1; ++y) {
+        r.row(y, x0, x1, cov.data());
+        blend_cov_row(t, x0, y, cov.data(), x1 - x0 + 1, s.color);
+    }
+}
+
+}  // namespace
+
 void RendererImpl::draw_into(const BlendTarget& t, const Stroke& s) const {
     const Rgba8 c = colour_of(s);
     if (c.a == 0) return;
@@ -168,6 +199,7 @@ void RendererImpl::draw_into(const BlendTarget& t, const Stroke& s) const {
             return;
         }
         case StrokeKind::Curve: draw_curve(t, s.curve); return;
+        case StrokeKind::Polygon: draw_polygon(t, s.polygon); return;
     }
 }
 
@@ -207,6 +239,12 @@ Status RendererImpl::stroke_mask(const Stroke& s, Mask& out) const {
             return make_error(Code::LimitExceeded, "stroke_mask: affine stroke box above 2^26 pixels");
         cov.resize(size_t((x1 - x0 + 1) * (y1 - y0 + 1)));
         rasterize_map(m, templates_[s.affine.tmpl], x0, y0, x1, y1, cov.data());
+    } else if (s.kind == StrokeKind::Polygon) {
+        polygon_box(s.polygon, x0, y0, x1, y1);
+        if (uint64_t(x1 - x0 + 1) * uint64_t(y1 - y0 + 1) > kMaxMaskPixels)
+            return make_error(Code::LimitExceeded, "stroke_mask: polygon stroke box above 2^26 pixels");
+        cov.resize(size_t((x1 - x0 + 1) * (y1 - y0 + 1)));
+        rasterize_polygon(s.polygon, x0, y0, x1, y1, cov.data());
     } else {
         curve_box(s.curve, x0, y0, x1, y1);
         if (uint64_t(x1 - x0 + 1) * uint64_t(y1 - y0 + 1) > kMaxMaskPixels)

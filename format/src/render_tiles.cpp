@@ -77,7 +77,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
         }
         Entry it;
         it.index = uint32_t(i);
-        it.spans.c = s.kind == StrokeKind::Stamp ? s.stamp.color : s.kind == StrokeKind::Affine ? s.affine.color : s.curve.color;
+        it.spans.c = s.color();
         if (it.spans.c.a == 0) continue;
         int64_t x0, y0, x1, y1;
         stroke_box(s, x0, y0, x1, y1);

@@ -36,6 +36,16 @@ void put_stroke(ByteSink& s, const Stroke& st, FieldStats* stats) {
             add(Field::Geometry, 4 + 12.0 * double(c.points.size()) - 8);
             break;
         }
+        case StrokeKind::Polygon: {
+            const auto& p = st.polygon;
+            rgba(p.color);
+            s.u8(p.supersample);
+            s.u32(uint32_t(p.points.size()));
+            for (const auto& v : p.points) { s.i32(v.x); s.i32(v.y); }
+            add(Field::Position, 8);
+            add(Field::Geometry, 5 + 8.0 * double(p.points.size()) - 8);
+            break;
+        }
     }
 }
 
@@ -83,6 +93,27 @@ Status get_stroke(ByteCursor& c, Stroke& st, const DecodeContext& ctx, uint32_t 
             SPT_TRY(c.need(size_t(n) * 12, "curve points"));
             cv.points.resize(n);
             for (auto& p : cv.points) { SPT_TRY(c.i32(p.x, "x")); SPT_TRY(c.i32(p.y, "y")); SPT_TRY(c.u32(p.width, "width")); }
+            return {};
+        }
+        case 3: {
+            // Format 1.2. Stored records are unambiguous, so they decode whatever the header's
+            // minor version says (SPEC.md 6).
+            st.kind = StrokeKind::Polygon;
+            auto& pg = st.polygon;
+            SPT_TRY(rgba(pg.color));
+            SPT_TRY(c.u8(pg.supersample, "polygon supersampling"));
+            if (pg.supersample == 1 || pg.supersample > 16)
+                return c.error(Code::Unsupported, "stroke " + std::to_string(i) + ": polygon supersampling " +
+                                                      std::to_string(pg.supersample) + " is reserved");
+            uint32_t n;
+            SPT_TRY(c.u32(n, "polygon vertex count"));
+            if (n < 3) return c.error(Code::Corrupt, "stroke " + std::to_string(i) + ": polygon of " + std::to_string(n) + " vertices");
+            if (n > ctx.limits.max_polygon_vertices)
+                return c.error(Code::LimitExceeded, "stroke " + std::to_string(i) + ": polygon of " + std::to_string(n) +
+                                                        " vertices exceeds the limit");
+            SPT_TRY(c.need(size_t(n) * 8, "polygon vertices"));
+            pg.points.resize(n);
+            for (auto& v : pg.points) { SPT_TRY(c.i32(v.x, "x")); SPT_TRY(c.i32(v.y, "y")); }
             return {};
         }
         default:

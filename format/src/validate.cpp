@@ -92,6 +92,18 @@ Status check_stroke(const Stroke& s, const StreamShape& sh, const Limits& lim, C
             }
             return {};
         }
+        case StrokeKind::Polygon: {
+            const auto& p = s.polygon;
+            if (p.points.size() < 3) return fail(code, where, "polygon has " + std::to_string(p.points.size()) + " vertices, not 3 or more", off);
+            if (p.points.size() > lim.max_polygon_vertices)
+                return fail(Code::LimitExceeded, where, "polygon has " + std::to_string(p.points.size()) + " vertices, above the limit", off);
+            if (p.supersample == 1 || p.supersample > 16)
+                return fail(Code::Unsupported, where, "polygon supersampling " + std::to_string(p.supersample) + " is not 0 or 2..16", off);
+            for (size_t i = 0; i < p.points.size(); ++i)
+                if (!coord_ok(p.points[i].x) || !coord_ok(p.points[i].y))
+                    return fail(code, where, "polygon vertex " + std::to_string(i) + " is outside +-2^24", off);
+            return {};
+        }
     }
     return fail(code, where, "stroke kind " + std::to_string(int(s.kind)) + " is reserved", off);
 }

@@ -21,10 +21,16 @@ constexpr uint32_t kMaxTemplateSide = 1024;
 struct StreamShape {
     uint32_t width = 0, height = 0;
     uint32_t sets = 0, orientations = 0, templates = 0;
+    // HEAD's version_minor: coding 1 codes the polygon kind flag only from 1.2 on (SPEC.md 7.4).
+    uint32_t version_minor = 0;
     static StreamShape of(const Header& h, size_t templates) {
-        return {h.width, h.height, uint32_t(h.sets.size()), uint32_t(h.orientations.size()), uint32_t(templates)};
+        return {h.width, h.height, uint32_t(h.sets.size()), uint32_t(h.orientations.size()), uint32_t(templates),
+                h.version_minor};
     }
+    bool has_polygons() const { return version_minor >= 2; }
 };
+// First format minor version with polygon strokes.
+constexpr uint16_t kPolygonMinorVersion = 2;
 
 // `code` is the error code to report (InvalidArgument when writing, Corrupt when reading);
 // `where` prefixes the message; `offset` is the byte offset to report.

@@ -81,8 +81,10 @@ public:
         if (next_index_ == 0xFFFFFFFEu) return make_error(Code::InvalidArgument, where + ": too many frames");
         Limits lim;
         lim.max_curve_points = 0xFFFFFFFFu;  // writers follow the format, not a reader's limits
+        lim.max_polygon_vertices = 0xFFFFFFFFu;
         lim.max_strokes_per_frame = lim.max_live_strokes = 0xFFFFFFFFu;
         if (auto st = detail::check_frame(frame, shape_, lim, live_, Code::InvalidArgument, where, pos_); !st) return st;
+        if (auto st = polygon_version(frame, where); !st) return st;
         ByteSink chunk_payload;
         detail::BodySplit split;
         // Coding 2 when the frame's strokes replay from its generator, else coding 1 (SPEC.md 7.7).
@@ -116,6 +118,8 @@ public:
         ++stats_.frames;
         if (frame.type == FrameType::Key) ++stats_.key_frames;
         stats_.strokes += frame.added.size();
+        if (coding == Coding::Range)
+            for (const Stroke& s : frame.added) range_curves_ = range_curves_ || s.kind == StrokeKind::Curve;
         return {};
     }
 
@@ -166,6 +170,31 @@ public:
     const WriteStats& stats() const override { return stats_; }
 
 private:
+    // Polygon strokes are format 1.2 (SPEC.md 11). A file without them keeps the caller's
+    // version, so that its bytes do not change; the first frame with a polygon raises HEAD's
+    // version_minor to 2 (rewritten in place) when every frame written so far decodes the same
+    // under 1.2: stored frames always do, range-coded ones unless they hold a curve (1.2 codes
+    // one more kind flag after it). Otherwise the caller must ask for 1.2 when creating.
+    Status polygon_version(const Frame& frame, const std::string& where) {
+        if (header_.version_minor >= detail::kPolygonMinorVersion) return {};
+        bool any = false;
+        for (const Stroke& s : frame.added) any = any || s.kind == StrokeKind::Polygon;
+        if (!any) return {};
+        if (range_curves_)
+            return make_error(Code::InvalidArgument, where + ": polygon strokes need format 1.2, and earlier frames were "
+                                                              "range-coded as 1." + std::to_string(header_.version_minor) +
+                                                              " with curves: create the writer with header.version_minor = 2");
+        header_.version_minor = detail::kPolygonMinorVersion;
+        shape_.version_minor = header_.version_minor;
+        Header h = header_;
+        h.frame_count = kUnknownFrameCount;
+        ByteSink head;
+        detail::put_chunk(head, "HEAD", detail::encode_head(h));
+        if (std::fseek(file_, 8, SEEK_SET) != 0 || std::fwrite(head.bytes().data(), 1, head.size(), file_) != head.size() ||
+            std::fseek(file_, 0, SEEK_END) != 0)
+            return fail(make_error(Code::IoError, out_path_ + ": cannot update HEAD: " + std::strerror(errno)));
+        return {};
+    }
     Status usable() const {
         if (finished_) return make_error(Code::BadState, path_ + ": writer already finished");
         if (failed_) return make_error(Code::BadState, path_ + ": writer failed earlier or was aborted");
@@ -197,6 +226,7 @@ private:
     WriteStats stats_;
     std::unique_ptr<Renderer> renderer_;      // coding 2 only
     std::vector<Stroke> live_strokes_;        // coding 2 only
+    bool range_curves_ = false;               // a coding-1 frame with a curve was written
     bool finished_ = false, failed_ = false, removed_ = false;
 };
 

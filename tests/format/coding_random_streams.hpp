@@ -26,14 +26,32 @@ struct StreamShapeOptions {
     int frames = 6;
     int max_strokes = 60;
     bool painter_like = false;  // stamps on pixel centres, coarse-to-fine sets
+    // Polygon strokes too (format 1.2). Off by default, so that the streams of the golden files
+    // (tests/format/make_golden.cpp) stay what they were.
+    bool polygons = false;
 };
 
-inline Stroke random_stroke(std::mt19937_64& rng, const StreamInfo& info, bool painter_like, int set_hint) {
+inline Stroke random_stroke(std::mt19937_64& rng, const StreamInfo& info, bool painter_like, int set_hint,
+                            bool polygons = false) {
     auto uni = [&](int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng); };
     const auto& h = info.header;
     const int64_t W = h.width, H = h.height;
     Rgba8 col{uint8_t(uni(0, 255)), uint8_t(uni(0, 255)), uint8_t(uni(0, 255)), uint8_t(uni(0, 3) ? 255 : uni(0, 254))};
-    const int kind = painter_like ? 0 : int(uni(0, 2));
+    const int kind = painter_like ? 0 : int(uni(0, polygons ? 3 : 2));
+    if (kind == 3) {
+        PolygonStroke p;
+        p.color = col;
+        p.supersample = uint8_t(uni(0, 2) ? 0 : uni(2, 16));
+        const int n = int(uni(3, 24));
+        const int64_t unit = uni(0, 1) ? 8 : 1;  // half-pixel lattice (shift 3) or any Q4
+        int32_t x = int32_t(unit * (uni(0, 16 * W) / unit)), y = int32_t(unit * (uni(0, 16 * H) / unit));
+        for (int i = 0; i < n; ++i) {
+            p.points.push_back({x, y});
+            x += int32_t(unit * (uni(-300, 300) / unit));
+            y += int32_t(unit * (uni(-300, 300) / unit));
+        }
+        return Stroke::make_polygon(std::move(p));
+    }
     const auto T = int64_t(info.templates.size());
     if (kind == 0) {
         StampStroke s;
@@ -122,7 +140,7 @@ inline RandomStream make_random_stream(uint64_t seed, const StreamShapeOptions& 
         const int n = int(uni(0, o.max_strokes));
         for (int i = 0; i < n; ++i) {
             const int set = int(std::min<int64_t>(int64_t(h.sets.size()) - 1, int64_t(i) * int64_t(h.sets.size()) / std::max(n, 1)));
-            f.added.push_back(random_stroke(rng, rs.info, o.painter_like, set));
+            f.added.push_back(random_stroke(rng, rs.info, o.painter_like, set, o.polygons));
         }
         live = (f.type == FrameType::Key ? 0 : live - f.removed.size()) + f.added.size();
         rs.frames.push_back(std::move(f));

@@ -31,6 +31,11 @@ inline std::vector<uint8_t> canonical_stored_bytes(const std::vector<Stroke>& li
             b.push_back(a.tmpl);
             for (int32_t v : {a.tx, a.ty, a.a, a.b, a.c, a.d}) put32(b, uint32_t(v));
             rgba(a.color);
+        } else if (s.kind == StrokeKind::Polygon) {
+            rgba(s.polygon.color);
+            b.push_back(s.polygon.supersample);
+            put32(b, uint32_t(s.polygon.points.size()));
+            for (const auto& p : s.polygon.points) { put32(b, uint32_t(p.x)); put32(b, uint32_t(p.y)); }
         } else {
             rgba(s.curve.color);
             put32(b, uint32_t(s.curve.points.size()));

@@ -15,6 +15,7 @@ struct Limits {
     uint32_t max_strokes_per_frame = 1u << 24;
     uint32_t max_live_strokes = 1u << 24;      // strokes alive after applying a frame
     uint32_t max_curve_points = 1u << 16;      // points in one curve stroke
+    uint32_t max_polygon_vertices = 1u << 16;  // vertices of one polygon stroke (format 1.2)
     uint32_t max_metadata_bytes = 1u << 24;
     uint32_t max_frames = 0xFFFFFFFEu;
 };

@@ -58,7 +58,7 @@ struct Template {
     friend bool operator==(const Template&, const Template&) = default;
 };
 
-enum class StrokeKind : uint8_t { Stamp = 0, Affine = 1, Curve = 2 };
+enum class StrokeKind : uint8_t { Stamp = 0, Affine = 1, Curve = 2, Polygon = 3 };
 
 // The paper's SPT stroke: a template of a stroke set at one of the table's orientations.
 struct StampStroke {
@@ -93,21 +93,50 @@ struct CurveStroke {
     friend bool operator==(const CurveStroke&, const CurveStroke&) = default;
 };
 
+struct PolygonVertex {
+    int32_t x = 0, y = 0;  // Q4
+    friend bool operator==(const PolygonVertex&, const PolygonVertex&) = default;
+};
+
+// A filled polygon (format 1.2): n >= 3 vertices, closed, nonzero fill rule, sampled at pixel
+// centres or on an N x N grid like analytic templates (SPEC.md 4 and 8.8). Shapes of painters
+// whose pixels no affine image of a template reproduces (geometrize's 20-gon ellipses, SVG
+// polygons) are stored with it exactly.
+struct PolygonStroke {
+    Rgba8 color;
+    uint8_t supersample = 0;  // 0: pixel centres; 2..16: N x N samples per pixel
+    std::vector<PolygonVertex> points;
+    friend bool operator==(const PolygonStroke&, const PolygonStroke&) = default;
+};
+
 struct Stroke {
     StrokeKind kind = StrokeKind::Stamp;
     StampStroke stamp;    // valid when kind == Stamp
     AffineStroke affine;  // valid when kind == Affine
     CurveStroke curve;    // valid when kind == Curve
+    PolygonStroke polygon;  // valid when kind == Polygon
 
     static Stroke make_stamp(const StampStroke& s) { Stroke r; r.kind = StrokeKind::Stamp; r.stamp = s; return r; }
     static Stroke make_affine(const AffineStroke& s) { Stroke r; r.kind = StrokeKind::Affine; r.affine = s; return r; }
     static Stroke make_curve(CurveStroke s) { Stroke r; r.kind = StrokeKind::Curve; r.curve = std::move(s); return r; }
+    static Stroke make_polygon(PolygonStroke s) { Stroke r; r.kind = StrokeKind::Polygon; r.polygon = std::move(s); return r; }
+    // The stroke's colour, whatever its kind.
+    const Rgba8& color() const {
+        switch (kind) {
+            case StrokeKind::Stamp: return stamp.color;
+            case StrokeKind::Affine: return affine.color;
+            case StrokeKind::Curve: return curve.color;
+            case StrokeKind::Polygon: return polygon.color;
+        }
+        return stamp.color;
+    }
     friend bool operator==(const Stroke& x, const Stroke& y) {
         if (x.kind != y.kind) return false;
         switch (x.kind) {
             case StrokeKind::Stamp: return x.stamp == y.stamp;
             case StrokeKind::Affine: return x.affine == y.affine;
             case StrokeKind::Curve: return x.curve == y.curve;
+            case StrokeKind::Polygon: return x.polygon == y.polygon;
         }
         return false;
     }
