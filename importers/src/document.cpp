@@ -81,6 +81,13 @@ Status check_stroke(const Stroke& s, const Header& h, size_t templates, const Li
             for (const auto& p : s.curve.points)
                 if (!pos_ok(p.x) || !pos_ok(p.y) || p.width > uint32_t(kAxis)) return Error(bad(where, "curve point out of range"));
             break;
+        case StrokeKind::Polygon:
+            if (s.polygon.points.size() < 3) return Error(bad(where, "polygon with fewer than 3 vertices"));
+            if (s.polygon.points.size() > lim.max_polygon_vertices) return Error(bad(where, "polygon has more vertices than the limit"));
+            if (s.polygon.supersample == 1 || s.polygon.supersample > 16) return Error(bad(where, "polygon supersampling is not 0 or 2..16"));
+            for (const auto& p : s.polygon.points)
+                if (!pos_ok(p.x) || !pos_ok(p.y)) return Error(bad(where, "polygon vertex out of range"));
+            break;
     }
     return {};
 }
@@ -162,6 +169,11 @@ Result<WriteStats> write_document(const Document& doc, const std::string& path, 
     if (Status v = validate(doc, path); !v) return v.error();
     StreamInfo info = doc.info;
     info.header.frame_count = uint32_t(doc.frames.size());
+    // Polygon strokes are format 1.2 (SPEC.md 11): say so from the start, so that frames coded
+    // before the first polygon use the same kind coding; documents without them stay 1.0.
+    for (const Frame& f : doc.frames)
+        for (const Stroke& s : f.added)
+            if (s.kind == StrokeKind::Polygon && info.header.version_minor < 2) info.header.version_minor = 2;
     auto w = Writer::create(path, info, opts);
     if (!w) return w.error();
     for (const Frame& f : doc.frames) {

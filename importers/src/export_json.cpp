@@ -63,6 +63,21 @@ void stroke(std::string& o, const Stroke& s) {
             o += "]}";
             break;
         }
+        case StrokeKind::Polygon: {
+            const auto& pg = s.polygon;
+            o += "{\"type\": \"polygon\", ";
+            color(o, pg.color);
+            if (pg.supersample) o += ", \"supersample\": " + std::to_string(pg.supersample);
+            o += ", \"points\": [";
+            for (size_t i = 0; i < pg.points.size(); ++i) {
+                if (i) o += ", ";
+                o += "[";
+                q4(o, pg.points[i].x); o += ", "; q4(o, pg.points[i].y);
+                o += "]";
+            }
+            o += "]}";
+            break;
+        }
     }
 }
 
@@ -80,7 +95,11 @@ const char* kind_name(TemplateKind k) {
 
 std::string export_json(const Document& doc) {
     const Header& h = doc.info.header;
-    std::string o = "{\n  \"format\": \"spt-strokes\",\n  \"version\": 1,\n";
+    // Version 2 only when a polygon stroke needs it: other documents export as before.
+    bool polygons = false;
+    for (const Frame& f : doc.frames)
+        for (const Stroke& s : f.added) polygons = polygons || s.kind == StrokeKind::Polygon;
+    std::string o = std::string("{\n  \"format\": \"spt-strokes\",\n  \"version\": ") + (polygons ? "2" : "1") + ",\n";
     o += "  \"canvas\": {\"width\": " + std::to_string(h.width) + ", \"height\": " + std::to_string(h.height) +
          ", \"background\": [" + std::to_string(h.background.r) + ", " + std::to_string(h.background.g) + ", " +
          std::to_string(h.background.b) + "], \"fps\": [" + std::to_string(h.fps.num) + ", " + std::to_string(h.fps.den) + "]},\n";

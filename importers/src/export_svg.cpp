@@ -46,6 +46,17 @@ std::string template_shape(const Template& t, size_t id) {
     return "";
 }
 
+// Polygon strokes: SVG's nonzero fill rule is the stroke's (SPEC.md 8.8); SVG renderers
+// anti-alias, like a supersampled polygon.
+void polygon(std::string& o, const PolygonStroke& p) {
+    o += "<polygon points=\"";
+    for (size_t i = 0; i < p.points.size(); ++i) {
+        if (i) o += " ";
+        o += num(p.points[i].x / 16.0) + "," + num(p.points[i].y / 16.0);
+    }
+    o += "\" fill-rule=\"nonzero\" fill=\"" + hex(p.color) + "\"" + opacity(p.color.a) + "/>\n";
+}
+
 void curve(std::string& o, const CurveStroke& c) {
     o += "<g fill=\"" + hex(c.color) + "\"";
     if (c.color.a != 255) o += " opacity=\"" + num(c.color.a / 255.0) + "\"";
@@ -91,6 +102,7 @@ Result<std::string> export_svg(const StreamInfo& info, const std::vector<Stroke>
     o += "<rect width=\"" + std::to_string(h.width) + "\" height=\"" + std::to_string(h.height) + "\" fill=\"" + hex({h.background.r, h.background.g, h.background.b, 255}) + "\"/>\n";
     for (const Stroke& s : strokes) {
         if (s.kind == StrokeKind::Curve) { curve(o, s.curve); continue; }
+        if (s.kind == StrokeKind::Polygon) { polygon(o, s.polygon); continue; }
         uint8_t tmpl;
         double A, B, C, D, E, F;
         Rgba8 col;

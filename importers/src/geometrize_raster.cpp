@@ -170,9 +170,13 @@ public:
             }
     }
     uint64_t operator()(const AffineStroke& s) const {
-        Mask m;
         Stroke st = Stroke::make_affine(s);
         st.affine.color = {0, 0, 0, 255};
+        return (*this)(st);
+    }
+    // Any stroke kind, drawn opaque.
+    uint64_t operator()(const Stroke& st) const {
+        Mask m;
         if (!r_.stroke_mask(st, m)) return ~uint64_t(0);
         uint64_t hit = 0, extra = 0;
         const int32_t cw = int32_t(w_) - 1, ch = int32_t(h_) - 1;
@@ -321,11 +325,113 @@ std::vector<AffineStroke> initial_guesses(int type, const std::vector<double>& d
 
 }  // namespace
 
+namespace {
+
+// geometrize's outline of the edge from pixel a to pixel b takes, along the edge's major axis,
+// every pixel whose centre lies within half a pixel of the line through the two centres (its
+// span fill then closes the rows). A polygon through the pixel centres with each edge moved
+// out by exactly half a pixel along its minor axis covers those centres: every vertex stays on
+// the half-pixel lattice (Q4 multiples of 8), which codes compactly (SPEC.md 7.4 polygon
+// shift). Where two edges move in different directions a short connector joins them; it
+// encloses no pixel centre besides the vertex's own.
+std::vector<PolygonVertex> lattice_polygon(std::vector<Pix> v) {
+    std::vector<Pix> p;
+    for (const Pix& q : v)
+        if (p.empty() || q != p.back()) p.push_back(q);
+    while (p.size() > 1 && p.front() == p.back()) p.pop_back();
+    const size_t n = p.size();
+    std::vector<PolygonVertex> out;
+    if (n == 0) return out;
+    int64_t area = 0;
+    for (size_t i = 0; i < n; ++i)
+        area += int64_t(p[i].first) * p[(i + 1) % n].second - int64_t(p[(i + 1) % n].first) * p[i].second;
+    const int sgn = area >= 0 ? 1 : -1;
+    // Centre of pixel (x, y) in Q4 is (16x + 8, 16y + 8); half a pixel is 8.
+    std::vector<std::pair<int32_t, int32_t>> shift(n);
+    for (size_t i = 0; i < n; ++i) {
+        const int64_t dx = p[(i + 1) % n].first - p[i].first, dy = p[(i + 1) % n].second - p[i].second;
+        const int64_t nx = sgn * dy, ny = -sgn * dx;  // outward normal
+        if (std::llabs(dx) >= std::llabs(dy)) shift[i] = {0, ny > 0 ? 8 : -8};
+        else shift[i] = {nx > 0 ? 8 : -8, 0};
+    }
+    auto add = [&out](int32_t x, int32_t y) {
+        const PolygonVertex q{x, y};
+        if (out.empty() || !(out.back() == q)) out.push_back(q);
+    };
+    for (size_t i = 0; i < n; ++i) {
+        const int32_t cx = 16 * p[i].first + 8, cy = 16 * p[i].second + 8;
+        const auto& a = shift[(i + n - 1) % n];
+        const auto& b = shift[i];
+        add(cx + a.first, cy + a.second);
+        add(cx + b.first, cy + b.second);
+    }
+    while (out.size() > 1 && out.front() == out.back()) out.pop_back();
+    // Drop vertices in the middle of a straight run: the same edges, fewer bytes.
+    for (bool again = true; again && out.size() > 3;) {
+        again = false;
+        for (size_t i = 0; i < out.size() && out.size() > 3; ++i) {
+            const PolygonVertex& a = out[(i + out.size() - 1) % out.size()];
+            const PolygonVertex& b = out[i];
+            const PolygonVertex& c = out[(i + 1) % out.size()];
+            const int64_t cr = int64_t(b.x - a.x) * (c.y - b.y) - int64_t(b.y - a.y) * (c.x - b.x);
+            const int64_t dot = int64_t(b.x - a.x) * (c.x - b.x) + int64_t(b.y - a.y) * (c.y - b.y);
+            if (cr == 0 && dot > 0) { out.erase(out.begin() + long(i)); again = true; }
+        }
+    }
+    return out;
+}
+
+// Moves single vertices by a few Q4 units while that lowers the count of differing pixels
+// (ties between the half-open edge rule and geometrize's line rule). Bounded.
+uint64_t refine(const Objective& f, PolygonStroke& pg, uint64_t best) {
+    for (int sweep = 0; sweep < 2 && best > 0; ++sweep) {
+        bool improved = false;
+        for (size_t i = 0; i < pg.points.size() && best > 0; ++i)
+            for (int axis = 0; axis < 2; ++axis)
+                for (int d : {1, -1, 2, -2, 4, -4}) {
+                    int32_t& c = axis ? pg.points[i].y : pg.points[i].x;
+                    const int32_t old = c;
+                    c = old + d;
+                    const uint64_t v = f(Stroke::make_polygon(pg));
+                    if (v < best) { best = v; improved = true; break; }
+                    c = old;
+                }
+        if (!improved) break;
+    }
+    return best;
+}
+
+bool append_polygon(const Renderer& r, const std::vector<Pix>& vertices, const std::vector<Span>& target, Rgba8 colour,
+                    uint32_t w, uint32_t h, std::vector<Stroke>& out, ImportReport& rep, uint64_t& differing) {
+    PolygonStroke pg;
+    pg.points = lattice_polygon(vertices);
+    if (pg.points.size() < 3) return false;
+    const Objective f(r, target, w, h);
+    pg.color = {0, 0, 0, 255};
+    uint64_t miss = f(Stroke::make_polygon(pg));
+    if (miss == ~uint64_t(0)) return false;
+    miss = refine(f, pg, miss);
+    pg.color = colour;
+    out.push_back(Stroke::make_polygon(std::move(pg)));
+    ++rep.strokes;
+    if (miss) { ++rep.approximated; differing += miss; }
+    return true;
+}
+
+}  // namespace
+
 void append_shape(const Renderer& r, int type, const std::vector<double>& d, Rgba8 colour, uint32_t w, uint32_t h,
                   std::vector<Stroke>& out, ImportReport& rep, uint64_t& differing) {
     if (colour.a == 0) { ++rep.dropped; return; }
     const auto target = type == kExplicitPolygon ? trim(polygon_spans(explicit_polygon(d)), w, h) : spans(type, d, w, h);
     if (target.empty()) { ++rep.dropped; rep.note("shapes geometrize paints no pixel of dropped"); return; }
+    // Rotated ellipses (20-gons) and polygons of more than four vertices: a polygon stroke on
+    // geometrize's own integer vertices (format 1.2). Triangles and quadrilaterals stay affine
+    // strokes of the analytic templates, which match its pixels as closely and cost fewer bytes.
+    if (type == 16 || (type == kExplicitPolygon && d.size() > 8)) {
+        const auto v = type == kExplicitPolygon ? explicit_polygon(d) : polygon(type, d);
+        if (append_polygon(r, v, target, colour, w, h, out, rep, differing)) return;
+    }
     AffineStroke a;
     uint64_t miss = ~uint64_t(0);
     for (AffineStroke g : initial_guesses(type, d)) {

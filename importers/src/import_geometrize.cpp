@@ -147,7 +147,7 @@ Result<Document> load(const std::string& path, std::string_view text, const Impo
         if (s.type >= 64) doc.report.note("lines drawn 1 px wide with round caps (geometrize draws aliased 1 px lines)");
     }
     if (differing)
-        doc.report.note("geometrize's scanline rasterisation reproduced by fitted affine strokes; " + std::to_string(differing) +
+        doc.report.note("geometrize's scanline rasterisation reproduced by fitted affine and polygon strokes; " + std::to_string(differing) +
                         " shape pixels differ from it");
     // geometrize never paints the last row and column: put the canvas colour back there.
     for (const Stroke& st : canvas_strip_strokes(W, H, doc.info.header.background, 1)) out.push_back(st);

@@ -19,6 +19,8 @@ class Ctx {
 public:
     Ctx(const std::string& src, const Limits& lim) : src_(src), lim_(lim) {}
     const Limits& lim() const { return lim_; }
+    // The document's version: 2 adds polygon strokes (`polygon` is then stored as one).
+    int64_t version = 1;
     Error err(const Value& v, const std::string& what) const {
         return make_error(Code::Corrupt, src_ + ":" + std::to_string(v.line) + ": " + what);
     }
@@ -178,6 +180,33 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
         ++rep.shapes;
         StrokeSink sink(out, rep);
         sink.affine(tmpl, Mat2x3::translate(ctr[0], ctr[1]) * Mat2x3::rotate_deg(angle) * Mat2x3::scale(size[0] / 2, size[1] / 2), color);
+    } else if (t == "polygon" && c.version >= 2) {
+        // Version 2: a polygon stroke, stored as given (SPEC.md 4, format 1.2).
+        PolygonStroke pg;
+        if (!read_color(c, s, where, pg.color, e)) return false;
+        if (const Value* n = s.find("supersample")) {
+            int64_t v;
+            if (!c.integer(*n, where + ".supersample", 0, 16, v, e)) return false;
+            if (v == 1) { e = c.err(*n, where + ".supersample must be 0 or 2..16"); return false; }
+            pg.supersample = uint8_t(v);
+        }
+        const Value* f = field(c, s, "points", where, e);
+        if (!f || !c.need(*f, Type::Array, where + ".points", e)) return false;
+        if (f->items.size() < 3 || f->items.size() > c.lim().max_polygon_vertices) {
+            e = c.err(*f, where + ".points: 3.." + std::to_string(c.lim().max_polygon_vertices) + " vertices required");
+            return false;
+        }
+        for (size_t i = 0; i < f->items.size(); ++i) {
+            const std::string pn = where + ".points[" + std::to_string(i) + "]";
+            const Value& p = f->items[i];
+            if (!c.need(p, Type::Array, pn, e)) return false;
+            if (p.items.size() != 2) { e = c.err(p, pn + " must be [x, y]"); return false; }
+            PolygonVertex q;
+            if (!c.q4(p.items[0], pn + ".x", kPosPx, q.x, e) || !c.q4(p.items[1], pn + ".y", kPosPx, q.y, e)) return false;
+            pg.points.push_back(q);
+        }
+        out.push_back(Stroke::make_polygon(std::move(pg)));
+        ++rep.strokes;
     } else if (t == "polygon") {
         const Value* f = field(c, s, "points", where, e);
         if (!f || !c.need(*f, Type::Array, where + ".points", e)) return false;
@@ -200,7 +229,9 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
             if (k == 3) ids.triangle = uint8_t(i);
         }
         if (!have[2] || !have[3]) { e = c.err(s, where + ": polygons need rectangle and triangle templates"); return false; }
-        StrokeSink(out, rep, ids).polygon(pts, color);
+        StrokeSink sink(out, rep, ids);
+        sink.set_polygon_supersample(info.templates[ids.triangle].supersample);
+        sink.polygon(pts, color);
     } else if (t == "curve") {
         CurveStroke cv;
         if (!read_color(c, s, where, cv.color, e)) return false;
@@ -439,7 +470,9 @@ Result<Document> load(const std::string& path, std::string_view text, const Impo
     int64_t version = 0;
     const Value* ver = field(c, r, "version", "document", e);
     if (!ver || !c.integer(*ver, "version", 0, 1 << 30, version, e)) return e;
-    if (version != 1) return c.err(*ver, "stroke list version " + std::to_string(version) + " is not supported (this reader knows 1)");
+    if (version != 1 && version != 2)
+        return c.err(*ver, "stroke list version " + std::to_string(version) + " is not supported (this reader knows 1 and 2)");
+    c.version = version;
     Document doc;
     if (!read_header(c, r, doc.info.header, e)) return e;
     if (!read_templates(c, r.find("templates"), doc.info.templates, e)) return e;

@@ -61,7 +61,7 @@ public:
         if (opts_.background) doc_.info.header.background = *opts_.background;
         if (geometrize_) {
             if (differing_)
-                doc_.report.note("geometrize's scanline rasterisation reproduced by fitted affine strokes; " +
+                doc_.report.note("geometrize's scanline rasterisation reproduced by fitted affine and polygon strokes; " +
                                  std::to_string(differing_) + " shape pixels differ from it");
             const Header& h = doc_.info.header;
             for (const Stroke& s : canvas_strip_strokes(h.width, h.height, h.background, 1)) doc_.frames[0].added.push_back(s);
@@ -325,6 +325,7 @@ private:
         if (!count_ok(el)) return false;
         auto& out = doc_.frames[0].added;
         StrokeSink sink(out, doc_.report);
+        if (!geometrize_) sink.set_polygon_supersample(kSvgSupersample);
         const std::string_view n = el.local_name();
         const Rgba8 col = fill_color(st);
         if (geometrize_ && !st.fill_none && (n == "rect" || n == "circle" || n == "ellipse" || n == "polygon"))

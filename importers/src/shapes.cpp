@@ -1,6 +1,6 @@
 // Shapes to strokes. Ellipses, rectangles, triangles and parallelograms are affine images of the
-// analytic templates, so they are exact up to rounding the map to the Q4 grid; only polygons
-// with more vertices are split (ear clipping), which the report says.
+// analytic templates, so they are exact up to rounding the map to the Q4 grid; other polygons
+// are polygon strokes (format 1.2), exact up to rounding their vertices.
 #include "spt_import/shapes.hpp"
 
 #include <algorithm>
@@ -102,18 +102,6 @@ void StrokeSink::triangle(Point p0, Point p1, Point p2, Rgba8 color) {
     affine(ids_.triangle, m, color);
 }
 
-namespace {
-
-double cross(Point o, Point a, Point b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-
-bool in_triangle(Point p, Point a, Point b, Point c) {
-    double d1 = cross(a, b, p), d2 = cross(b, c, p), d3 = cross(c, a, p);
-    bool neg = d1 < 0 || d2 < 0 || d3 < 0, pos = d1 > 0 || d2 > 0 || d3 > 0;
-    return !(neg && pos);
-}
-
-}  // namespace
-
 void StrokeSink::polygon(const std::vector<Point>& in, Rgba8 color) {
     ++rep_.shapes;
     std::vector<Point> p;
@@ -134,39 +122,23 @@ void StrokeSink::polygon(const std::vector<Point>& in, Rgba8 color) {
             return;
         }
     }
-    // Ear clipping: triangles that tile the polygon without overlapping interiors, so that a
-    // semi-transparent fill is not blended twice except along the shared diagonals.
-    ++rep_.approximated;
-    rep_.note("polygons with more than 3 vertices split into triangles (ear clipping): shared diagonals may blend twice");
+    // One polygon stroke: exact up to the Q4 grid, whatever its shape (nonzero fill, as SVG's
+    // default fill-rule), and a translucent fill blends once.
     if (p.size() > 4096) { ++rep_.dropped; rep_.note("polygons with more than 4096 vertices dropped"); return; }
-    double area = 0;
-    for (size_t i = 0; i < p.size(); ++i) area += cross({0, 0}, p[i], p[(i + 1) % p.size()]);
-    if (area < 0) std::reverse(p.begin(), p.end());
-    std::vector<size_t> idx(p.size());
-    for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-    size_t guard = 0;
-    while (idx.size() > 3 && guard < 4 * p.size() * p.size()) {
-        bool clipped = false;
-        for (size_t i = 0; i < idx.size(); ++i, ++guard) {
-            size_t ia = idx[(i + idx.size() - 1) % idx.size()], ib = idx[i], ic = idx[(i + 1) % idx.size()];
-            if (cross(p[ia], p[ib], p[ic]) <= 0) continue;  // reflex or flat
-            bool inside = false;
-            for (size_t j : idx)
-                if (j != ia && j != ib && j != ic && in_triangle(p[j], p[ia], p[ib], p[ic])) { inside = true; break; }
-            if (inside) continue;
-            triangle(p[ia], p[ib], p[ic], color);
-            idx.erase(idx.begin() + long(i));
-            clipped = true;
-            break;
+    if (color.a == 0) { ++rep_.dropped; rep_.note("fully transparent shapes dropped"); return; }
+    PolygonStroke pg;
+    pg.color = color;
+    pg.supersample = poly_aa_;
+    for (const auto& q : p) {
+        if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::fabs(q.x * 16) > kMaxPos || std::fabs(q.y * 16) > kMaxPos) {
+            ++rep_.dropped; rep_.note("polygons with vertices beyond the coordinate range dropped"); return;
         }
-        if (!clipped) {
-            // Self-intersecting: fall back to a fan over what is left.
-            rep_.note("self-intersecting polygons drawn as a triangle fan (overlaps blend twice)");
-            for (size_t i = 1; i + 1 < idx.size(); ++i) triangle(p[idx[0]], p[idx[i]], p[idx[i + 1]], color);
-            return;
-        }
+        const PolygonVertex v{to_q4(q.x), to_q4(q.y)};
+        rep_.max_q4_error_px = std::max(rep_.max_q4_error_px, std::hypot(v.x / 16.0 - q.x, v.y / 16.0 - q.y));
+        pg.points.push_back(v);
     }
-    if (idx.size() == 3) triangle(p[idx[0]], p[idx[1]], p[idx[2]], color);
+    out_.push_back(Stroke::make_polygon(std::move(pg)));
+    ++rep_.strokes;
 }
 
 void StrokeSink::polyline(const std::vector<Point>& pts, double width, Rgba8 color) {

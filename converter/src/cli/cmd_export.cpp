@@ -33,7 +33,8 @@ int cmd_export(int argc, char** argv) {
         .option("frames", "RANGE", "SVG only: the frames to export (\"0-10,20\"; 0-based)")
         .epilog("The JSON output imports back (spt import) into the same .spt file. In the SVG, each stamp or\n"
                 "affine stroke is its template (ellipse/rect/polygon, or a bitmap as a PNG mask) placed with\n"
-                "transform=\"matrix(...)\"; curves are round-capped outlines; the result renders in a browser\n"
+                "transform=\"matrix(...)\"; curves are round-capped outlines; polygon strokes are <polygon>s\n"
+                "(nonzero fill); the result renders in a browser\n"
                 "close to spt render (browsers anti-alias edges; spt samples pixel centres).");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     const std::string in = args.pos("IN.spt"), out = args.get("output");

@@ -39,14 +39,18 @@ public:
     void rect(const Mat2x3& m, double x, double y, double w, double h, Rgba8 color);
     void triangle(Point p0, Point p1, Point p2, Rgba8 color);
     // Polygons: triangles exactly; parallelograms (rotated rectangles) exactly as one rectangle
-    // stroke; other simple polygons are triangulated by ear clipping (see importers/README.md).
+    // stroke; others as one polygon stroke (format 1.2, nonzero fill), vertices rounded to Q4.
     void polygon(const std::vector<Point>& pts, Rgba8 color);
+    // Supersampling grid of the polygon strokes (0 or 2..16, SPEC.md 8.2): as the analytic
+    // templates', so that anti-aliased sources keep soft edges.
+    void set_polygon_supersample(uint8_t n) { poly_aa_ = n; }
     // A polyline of constant width with round caps and joins (lines, Bezier curves).
     void polyline(const std::vector<Point>& pts, double width, Rgba8 color);
 private:
     std::vector<Stroke>& out_;
     ImportReport& rep_;
     TemplateIds ids_;
+    uint8_t poly_aa_ = 0;
 };
 
 // Rounds to Q4 (1/16 px), saturating to the spec's coordinate range.
