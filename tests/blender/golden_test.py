@@ -32,7 +32,8 @@ for p in golden:
         if expect_error or not ok:
             print(f"  FAIL: {name} should {'fail' if expect_error else 'be complete'}")
             bad += 1
-        if np is not None:  # the numpy fast path must decode the same strokes
+        polygons = any(st[0] == 3 for lst in f.live_lists() for st in lst)
+        if np is not None and not polygons:  # the numpy fast path (no polygons yet) must agree
             fc = read_file(p, columnar=True)
             if [t.to_tuples() for t in fc.live_lists()] != list(f.live_lists()):
                 print(f"  FAIL: {name}: the numpy reader disagrees with the reference")

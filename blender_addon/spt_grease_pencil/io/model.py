@@ -6,6 +6,7 @@ by equality):
     stamp:  (STAMP, set, template, orient, x, y, r, g, b, a)
     affine: (AFFINE, template, tx, ty, a, b, c, d, r, g, b, a)
     curve:  (CURVE, r, g, b, a, ((x, y, width), ...))
+    polygon: (POLYGON, r, g, b, a, n_grid, ((x, y), ...))   format 1.2, SPEC.md 4 and 8.8
 
 All positions and lengths are Q4 integers (1/16 pixel), as in the file.
 """
@@ -13,7 +14,7 @@ All positions and lengths are Q4 integers (1/16 pixel), as in the file.
 from dataclasses import dataclass, field
 from typing import List, Optional, Tuple
 
-STAMP, AFFINE, CURVE = 0, 1, 2
+STAMP, AFFINE, CURVE, POLYGON = 0, 1, 2, 3
 KEY, INTER = 0, 1
 
 TEMPLATE_BITMAP, TEMPLATE_ELLIPSE, TEMPLATE_RECTANGLE, TEMPLATE_TRIANGLE = 0, 1, 2, 3
@@ -47,6 +48,7 @@ class Limits:
     max_strokes_per_frame: int = 1 << 24
     max_live_strokes: int = 1 << 24
     max_curve_points: int = 1 << 16
+    max_polygon_vertices: int = 1 << 16
     max_metadata_bytes: int = 1 << 24
     max_frames: int = 0xFFFFFFFE
 
@@ -134,4 +136,6 @@ def with_color(s, rgba):
         return s[:6] + (r, g, b, a)
     if s[0] == AFFINE:
         return s[:8] + (r, g, b, a)
+    if s[0] == POLYGON:
+        return (POLYGON, r, g, b, a, s[5], s[6])
     return (CURVE, r, g, b, a, s[5])

@@ -8,12 +8,13 @@ import struct
 from typing import Iterator, List
 
 from . import chunks
-from .model import (AFFINE, CURVE, INTER, KEY, MAX_CURVE_WIDTH, MAX_MATRIX, MAX_POS, STAMP,
+from .model import (AFFINE, CURVE, POLYGON, INTER, KEY, MAX_CURVE_WIDTH, MAX_MATRIX, MAX_POS, STAMP,
                     Frame, Header, Limits, Motion, NeedsPack, Roi, SptError, StreamInfo, Template)
 
 _STAMP = struct.Struct("<BBBBiiBBBB")          # kind included: the tuple is the stroke
 _AFFINE = struct.Struct("<BBiiiiiiBBBB")
 _CURVE_HEAD = struct.Struct("<BBBBBI")
+_POLYGON_HEAD = struct.Struct("<BBBBBBI")   # kind, r, g, b, a, grid N, n (format 1.2)
 _U32 = struct.Struct("<I")
 _HEAD = struct.Struct("<HHIIIIIIB3BBBH")
 _FRAM = struct.Struct("<IBBH")
@@ -105,6 +106,22 @@ def parse_strokes(body, pos: int, count: int, path: str, base: int, info: Stream
                     raise _err(path, base + pos, "curve point out of range")
             s = (CURVE, r, g, b, a, pts)
             pos += 9 + 12 * npts
+        elif kind == POLYGON:
+            if pos + 10 > n:
+                raise _err(path, base + pos, "truncated polygon stroke")
+            _, r, g, b, a, grid, npts = _POLYGON_HEAD.unpack_from(body, pos)
+            if grid == 1 or grid > 16:
+                raise _err(path, base + pos, f"polygon supersampling {grid} is reserved")
+            if npts < 3 or npts > limits.max_polygon_vertices:
+                raise _err(path, base + pos, f"polygon stroke has {npts} vertices (allowed 3..{limits.max_polygon_vertices})")
+            if pos + 10 + 8 * npts > n:
+                raise _err(path, base + pos, f"polygon stroke of {npts} vertices runs past the frame body")
+            pts = tuple(struct.iter_unpack("<ii", body[pos + 10:pos + 10 + 8 * npts]))
+            for (x, y) in pts:
+                if abs(x) > MAX_POS or abs(y) > MAX_POS:
+                    raise _err(path, base + pos, "polygon vertex out of range")
+            s = (POLYGON, r, g, b, a, grid, pts)
+            pos += 10 + 8 * npts
         else:
             raise _err(path, base + pos, f"unknown stroke kind {kind}")
         append(s)
@@ -444,6 +461,12 @@ def move_stroke(s, m: Motion, path="<memory>", index=0):
         if dx == 0 and dy == 0:
             return s
         return s[:2] + (chk(s[2] + dx), chk(s[3] + dy)) + s[4:]
+    if k == POLYGON:
+        # Rigidly, by the vector of the block holding the first vertex (SPEC.md 5).
+        dx, dy = _block_vector(m, s[6][0][0], s[6][0][1])
+        if dx == 0 and dy == 0:
+            return s
+        return s[:6] + (tuple((chk(x + dx), chk(y + dy)) for (x, y) in s[6]),)
     pts = []
     for (x, y, w) in s[5]:
         dx, dy = _block_vector(m, x, y)

@@ -195,6 +195,10 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
             pieces.append(row)
             pos += 9 + 12 * npts
             done += 1
+        elif kind == 3:
+            # Polygon strokes (format 1.2) have no column layout yet: the tuple reader
+            # (columnar=False) decodes them.
+            raise _err(path, base + pos, "polygon strokes (format 1.2) need the reference reader (columnar=False)")
         else:
             raise _err(path, base + pos, f"unknown stroke kind {kind}")
     rows = np.concatenate(pieces) if len(pieces) > 1 else (pieces[0] if pieces else np.zeros((0, NCOL), np.int32))

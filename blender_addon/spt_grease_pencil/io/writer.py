@@ -9,16 +9,17 @@ import tempfile
 from typing import Iterable, List
 
 from . import chunks
-from .model import AFFINE, CURVE, INTER, KEY, STAMP, Frame, SptError, StreamInfo
+from .model import AFFINE, CURVE, INTER, KEY, POLYGON, STAMP, Frame, SptError, StreamInfo
 
 _STAMP = struct.Struct("<BBBBiiBBBB")
 _AFFINE = struct.Struct("<BBiiiiiiBBBB")
 _CURVE_HEAD = struct.Struct("<BBBBBI")
 
 
-def head_payload(info: StreamInfo, frame_count: int) -> bytes:
+def head_payload(info: StreamInfo, frame_count: int, minor: int = 0) -> bytes:
+    """HEAD; `minor` is the format's minor version: 2 when a frame holds a polygon (SPEC.md 11)."""
     h = info.header
-    p = struct.pack("<HHIIIIIIB3BBBH", 1, 0, 0, h.width, h.height, h.fps_num, h.fps_den, frame_count,
+    p = struct.pack("<HHIIIIIIB3BBBH", 1, minor, 0, h.width, h.height, h.fps_num, h.fps_den, frame_count,
                     0, *h.background, len(h.sets), len(h.orientations), 0)
     p += b"".join(struct.pack("<HH", w, hh) for (w, hh) in h.sets)
     p += b"".join(struct.pack("<hh", c, s) for (c, s) in h.orientations)
@@ -59,6 +60,10 @@ def strokes_bytes(strokes: Iterable) -> bytes:
             pts = s[5]
             append(_CURVE_HEAD.pack(CURVE, s[1], s[2], s[3], s[4], len(pts)))
             append(b"".join(struct.pack("<iiI", *p) for p in pts))
+        elif k == POLYGON:
+            pts = s[6]
+            append(struct.pack("<BBBBBBI", POLYGON, s[1], s[2], s[3], s[4], s[5], len(pts)))
+            append(b"".join(struct.pack("<ii", *p) for p in pts))
         else:
             raise SptError(f"unknown stroke kind {k}")
     return b"".join(out)
@@ -96,7 +101,9 @@ def frame_payload(fr: Frame) -> bytes:
 def write_stored(path: str, info: StreamInfo, frames: List[Frame]) -> int:
     """Writes a complete stored-mode file (HEAD, TMPL*, meta, rois, FRAM*, indx, IEND).
     Returns the number of bytes written."""
-    parts = [chunks.SIGNATURE, chunks.chunk_bytes(b"HEAD", head_payload(info, len(frames)))]
+    minor = 2 if any(not hasattr(f.added, "record_bytes") and any(st[0] == POLYGON for st in f.added)
+                     for f in frames) else 0
+    parts = [chunks.SIGNATURE, chunks.chunk_bytes(b"HEAD", head_payload(info, len(frames), minor))]
     for t in info.templates:
         parts.append(chunks.chunk_bytes(b"TMPL", tmpl_payload(t)))
     if info.metadata:
