@@ -28,6 +28,29 @@ Header default_header(uint32_t width, uint32_t height, Rgb8 background) {
     return h;
 }
 
+void drop_unused_tables(Document& doc) {
+    std::vector<int> remap(doc.info.templates.size(), -1);
+    bool stamps = false;
+    for (const Frame& f : doc.frames)
+        for (const Stroke& s : f.added) {
+            if (s.kind == StrokeKind::Stamp) stamps = true, remap.at(s.stamp.tmpl) = 0;
+            if (s.kind == StrokeKind::Affine) remap.at(s.affine.tmpl) = 0;
+        }
+    std::vector<Template> kept;
+    for (size_t t = 0; t < remap.size(); ++t)
+        if (remap[t] == 0) {
+            remap[t] = int(kept.size());
+            kept.push_back(doc.info.templates[t]);
+        }
+    for (Frame& f : doc.frames)
+        for (Stroke& s : f.added) {
+            if (s.kind == StrokeKind::Stamp) s.stamp.tmpl = uint8_t(remap[s.stamp.tmpl]);
+            if (s.kind == StrokeKind::Affine) s.affine.tmpl = uint8_t(remap[s.affine.tmpl]);
+        }
+    doc.info.templates = std::move(kept);
+    if (!stamps && doc.info.header.orientations.size() > 1) doc.info.header.orientations.resize(1);
+}
+
 std::vector<Frame> frames_from_lists(const std::vector<std::vector<Stroke>>& lists) {
     std::vector<Frame> frames;
     for (size_t i = 0; i < lists.size(); ++i) {

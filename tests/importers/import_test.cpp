@@ -320,6 +320,38 @@ TEST(RoundTrip, ShapeStrokesAndDefaultTemplates) {
     EXPECT_EQ(s[2].affine.tmpl, 2);
 }
 
+TEST(Document, DropUnusedTablesKeepsThePixels) {
+    // Templates 0 and 1 unused (2 is the triangle), no stamps: one template and one orientation
+    // are left, the stroke's template id follows, and every pixel stays the same.
+    const char* js =
+        "{\"format\": \"spt-strokes\", \"version\": 1, \"canvas\": {\"width\": 40, \"height\": 30},\n"
+        " \"strokes\": [{\"type\": \"polygon\", \"points\": [[0,0],[30,2],[3,25]], \"color\": [9,80,200]}]}";
+    auto d = import_text("drop.json", js);
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    ASSERT_EQ(d->info.templates.size(), 3u);
+    ASSERT_EQ(d->frames[0].added[0].affine.tmpl, 2);
+    auto before = import::render_frame(*d, 0);
+    ASSERT_TRUE(before.ok());
+    import::drop_unused_tables(*d);
+    ASSERT_EQ(d->info.templates.size(), 1u);
+    EXPECT_EQ(d->info.templates[0].kind, TemplateKind::Triangle);
+    EXPECT_EQ(d->frames[0].added[0].affine.tmpl, 0);
+    EXPECT_EQ(d->info.header.orientations.size(), 1u);
+    auto after = import::render_frame(*d, 0);
+    ASSERT_TRUE(after.ok());
+    EXPECT_EQ(after->rgb, before->rgb);
+
+    // A stamp reads the orientation table: it stays whole.
+    auto rich = rich_document();
+    const size_t orientations = rich.info.header.orientations.size();
+    bool stamp = false;
+    for (const auto& f : rich.frames)
+        for (const auto& s : f.added) stamp = stamp || s.kind == StrokeKind::Stamp;
+    ASSERT_TRUE(stamp);
+    import::drop_unused_tables(rich);
+    EXPECT_EQ(rich.info.header.orientations.size(), orientations);
+}
+
 TEST(Export, SvgHoldsEveryStrokeAndReimports) {
     auto d = rich_document();
     auto svg = import::export_svg(d.info, d.frames[0].added);

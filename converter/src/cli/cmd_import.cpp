@@ -2,6 +2,7 @@
 // geometrize JSON; single files or numbered sequences) into a .spt file.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 
 #include "cli/args.hpp"
@@ -100,11 +101,13 @@ int cmd_import(int argc, char** argv) {
         import::set_background(*doc, *bg);
         fitted = true;
     }
-    // Provenance for foreign sources; a JSON stroke list keeps its own metadata, so that
+    // Provenance for foreign sources (the file name, not the path: the path says where the file
+    // was on one machine); a JSON stroke list keeps its own metadata and tables, so that
     // export -> import reproduces the .spt byte for byte.
     if (doc->info.metadata.empty()) {
         doc->info.metadata.emplace_back("software", "spt import");
-        doc->info.metadata.emplace_back("source", in);
+        doc->info.metadata.emplace_back("source", std::filesystem::path(in).filename().string());
+        import::drop_unused_tables(*doc);
     }
 
     WriterOptions wo;

@@ -47,6 +47,11 @@ std::vector<Template> default_templates();
 // A header with the given canvas and the default set/orientation tables.
 Header default_header(uint32_t width, uint32_t height, Rgb8 background);
 
+// Drops what a document of shapes does not use, so that small files stay small: templates no
+// stroke refers to (the others renumbered in order), and, when no frame has a stamp stroke, all
+// but one entry of the orientation table (stamps are the only strokes that read it).
+void drop_unused_tables(Document& doc);
+
 // Builds stored frames from per-frame stroke lists: the first is a key frame; each next one is
 // an inter frame that removes the tail of the previous list not shared as a common prefix and
 // appends the rest, unless that costs more strokes than a key frame.
