@@ -148,7 +148,7 @@ void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy
 // Composites one row of one-byte coverage: n pixels starting at canvas (x, y), clipped to t.
 void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c);
 
-enum class BlendIsa { Best, Scalar, Sse2, Avx2 };
+enum class BlendIsa { Best, Scalar, Sse2, Avx2, Avx512 };
 // Test hook: forces the span kernels of blend_spans/blend_cov_row onto one ISA (Best: the
 // fastest available). Not thread-safe; tests only.
 void force_span_isa(BlendIsa isa);

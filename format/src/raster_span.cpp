@@ -148,6 +148,40 @@ __attribute__((target("avx2"))) inline void span_avx2_t(uint8_t* dst, const uint
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(dst + last), tail);
 }
 
+
+// AVX-512BW: 64 bytes a step, the span's end by a byte mask (masked loads and stores touch
+// nothing outside the span, so short spans need no slack and no size classes: a span of up to
+// 21 pixels is one step).
+template <bool Opaque>
+__attribute__((target("avx512f,avx512bw"))) inline __m512i lanes32(__m512i d, __m512i c, __m512i p, __m512i a) {
+    const __m512i k127 = _mm512_set1_epi16(127), k255 = _mm512_set1_epi16(255), m = _mm512_set1_epi16(int16_t(0x8081));
+    __m512i al = c;
+    if (!Opaque) al = _mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(_mm512_mullo_epi16(c, a), k127), m), 7);
+    const __m512i v = _mm512_add_epi16(
+        _mm512_add_epi16(_mm512_mullo_epi16(d, _mm512_sub_epi16(k255, al)), _mm512_mullo_epi16(p, al)), k127);
+    return _mm512_srli_epi16(_mm512_mulhi_epu16(v, m), 7);
+}
+
+template <bool Opaque>
+__attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
+                                                                      uint32_t bytes, uint32_t a8) {
+    const __m512i a = _mm512_set1_epi16(int16_t(a8)), z = _mm512_setzero_si512();
+    uint32_t ph = 0;  // k % 3; k grows by 64, so the phase by 1 mod 3
+    for (uint32_t k = 0; k < bytes; k += 64) {
+        const uint32_t n = bytes - k;
+        const __mmask64 mask = n >= 64 ? ~__mmask64(0) : (__mmask64(1) << n) - 1;
+        const __m512i d = _mm512_maskz_loadu_epi8(mask, dst + k);
+        const __m512i c = _mm512_maskz_loadu_epi8(mask, cov + k);
+        const __m512i p = _mm512_loadu_si512(pat + ph);
+        // unpack/pack work per 128-bit lane, so the bytes come back in order.
+        const __m512i r = _mm512_packus_epi16(
+            lanes32<Opaque>(_mm512_unpacklo_epi8(d, z), _mm512_unpacklo_epi8(c, z), _mm512_unpacklo_epi8(p, z), a),
+            lanes32<Opaque>(_mm512_unpackhi_epi8(d, z), _mm512_unpackhi_epi8(c, z), _mm512_unpackhi_epi8(p, z), a));
+        _mm512_mask_storeu_epi8(dst + k, mask, r);
+        ph = ph == 2 ? 0 : ph + 1;
+    }
+}
+
 #endif  // SPT_SPAN_X86
 
 using SpanFn = void (*)(uint8_t*, const uint8_t*, const uint8_t*, uint32_t, uint32_t, bool);
@@ -209,6 +243,18 @@ __attribute__((target("avx2"))) void span_avx2(uint8_t* dst, const uint8_t* cov,
 __attribute__((target("avx2"))) void spans_avx2(const BlendTarget& t, const PlacedSpans& p) {
     SPT_SPANS_LOOP(span_avx2_inl, make_pattern_avx2)
 }
+__attribute__((target("avx512f,avx512bw"))) inline void span_avx512_inl(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
+                                                                        uint32_t bytes, uint32_t a, bool) {
+    if (a == 255) span_avx512_t<true>(dst, cov, pat, bytes, a);
+    else span_avx512_t<false>(dst, cov, pat, bytes, a);
+}
+__attribute__((target("avx512f,avx512bw"))) void span_avx512(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
+                                                             uint32_t bytes, uint32_t a, bool slack) {
+    span_avx512_inl(dst, cov, pat, bytes, a, slack);
+}
+__attribute__((target("avx512f,avx512bw"))) void spans_avx512(const BlendTarget& t, const PlacedSpans& p) {
+    SPT_SPANS_LOOP(span_avx512_inl, make_pattern_avx2)
+}
 #endif
 #undef SPT_SPANS_LOOP
 
@@ -221,10 +267,11 @@ struct Kernels {
 
 Kernels pick(BlendIsa isa) {
 #ifdef SPT_SPAN_X86
-    const bool avx2 = blend_isa_available(BlendIsa::Avx2);
+    const bool avx2 = blend_isa_available(BlendIsa::Avx2), avx512 = blend_isa_available(BlendIsa::Avx512);
     if (isa == BlendIsa::Scalar) return {spans_scalar, span_scalar};
     if (isa == BlendIsa::Sse2 || !avx2) return {spans_sse2, span_sse2};
-    return {spans_avx2, span_avx2};
+    if (isa == BlendIsa::Avx2 || !avx512) return {spans_avx2, span_avx2};
+    return {spans_avx512, span_avx512};
 #else
     (void)isa;
     return {spans_scalar, span_scalar};
@@ -246,6 +293,7 @@ void force_span_isa(BlendIsa isa) { g_forced = isa; }
 bool blend_isa_available(BlendIsa isa) {
 #ifdef SPT_SPAN_X86
     if (isa == BlendIsa::Avx2) return __builtin_cpu_supports("avx2");
+    if (isa == BlendIsa::Avx512) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("avx512bw");
     return true;
 #else
     return isa == BlendIsa::Scalar || isa == BlendIsa::Best;

@@ -41,7 +41,7 @@ spt::raster::BlendTarget row_target(std::vector<uint8_t>& px, int64_t x0, int64_
 // (dst, src, coverage) with an opaque colour, on every ISA the CPU has.
 TEST(RenderMath, SpanKernelsOpaqueEqualBlend8Exhaustively) {
     using spt::raster::BlendIsa;
-    for (BlendIsa isa : {BlendIsa::Scalar, BlendIsa::Sse2, BlendIsa::Avx2}) {
+    for (BlendIsa isa : {BlendIsa::Scalar, BlendIsa::Sse2, BlendIsa::Avx2, BlendIsa::Avx512}) {
         if (!spt::raster::blend_isa_available(isa)) continue;
         spt::raster::force_span_isa(isa);
         std::vector<uint8_t> dst(256 * 3 + spt::raster::kSpanPad), cov(256);
@@ -87,7 +87,7 @@ TEST(RenderMath, EverySpanPathEqualsBlend8OnEverySpanLength) {
     using spt::raster::BlendIsa;
     uint32_t seed = 1;
     auto rnd = [&]() { seed = seed * 1103515245u + 12345u; return uint8_t(seed >> 16); };
-    for (BlendIsa isa : {BlendIsa::Scalar, BlendIsa::Sse2, BlendIsa::Avx2, BlendIsa::Best}) {
+    for (BlendIsa isa : {BlendIsa::Scalar, BlendIsa::Sse2, BlendIsa::Avx2, BlendIsa::Avx512, BlendIsa::Best}) {
         if (!spt::raster::blend_isa_available(isa)) continue;
         spt::raster::force_span_isa(isa);
         for (int64_t n = 1; n <= 120; ++n)

@@ -101,7 +101,7 @@ TEST(RenderTiles, EverySpanKernelGivesTheSameBytes) {
     spt::Canvas scalar_tiles;
     ASSERT_TRUE(r->render(scalar_tiles, v).ok());
     ASSERT_EQ(scalar_tiles.rgb, expect.rgb);
-    for (BlendIsa isa : {BlendIsa::Sse2, BlendIsa::Avx2, BlendIsa::Best}) {
+    for (BlendIsa isa : {BlendIsa::Sse2, BlendIsa::Avx2, BlendIsa::Avx512, BlendIsa::Best}) {
         if (!spt::raster::blend_isa_available(isa)) continue;
         spt::raster::force_span_isa(isa);
         spt::Canvas tiles;
