@@ -14,8 +14,8 @@ except ImportError:
     sys.path.insert(0, ADDON)
 
 from spt_grease_pencil.io import model, writer  # noqa: E402
-from spt_grease_pencil.io.model import (AFFINE, CURVE, INTER, KEY, STAMP, Frame, Header, Motion,  # noqa: E402
-                                        StreamInfo, Template)
+from spt_grease_pencil.io.model import (AFFINE, CURVE, INTER, KEY, POLYGON, STAMP, Frame, Header,  # noqa: E402
+                                        Motion, StreamInfo, Template)
 
 
 def templates():
@@ -63,9 +63,30 @@ def random_curve(rng, inf):
     return (CURVE, rng.randrange(256), rng.randrange(256), rng.randrange(256), 255, pts)
 
 
-def animation(frames=4, per_set=(6, 10, 14), seed=7, affines=3, curves=2, motion=True, inf=None):
-    """A key frame (stamps coarse to fine, affine strokes, curves), then inter frames that remove
-    some strokes, move the rest (motion field) and add strokes of every kind, interleaved."""
+def random_polygon(rng, inf):
+    """A polygon (format 1.2): a jittered 3..12-gon (integer-pixel vertices like geometrize's,
+    sometimes sub-pixel), or now and then a self-intersecting star; grid N 0 or 2..16."""
+    h = inf.header
+    n = rng.randrange(3, 13)
+    cx, cy = rng.randrange(16 * h.width), rng.randrange(16 * h.height)
+    rad = rng.randrange(40, 400)
+    step = 2 if (n % 2 and n >= 5 and rng.random() < 0.2) else 1  # {n/2} star
+    pts = []
+    for k in range(n):
+        t = 2 * math.pi * ((k * step) % n) / n
+        x = cx + int(rad * math.cos(t)) + rng.randrange(-8, 9)
+        y = cy + int(rad * math.sin(t)) + rng.randrange(-8, 9)
+        if rng.random() < 0.7:
+            x, y = x & ~15, y & ~15
+        pts.append((x, y))
+    return (POLYGON, rng.randrange(256), rng.randrange(256), rng.randrange(256), rng.choice((255, 128)),
+            rng.choice((0, 2, 4, 16)), tuple(pts))
+
+
+def animation(frames=4, per_set=(6, 10, 14), seed=7, affines=3, curves=2, motion=True, inf=None, polygons=0):
+    """A key frame (stamps coarse to fine, affine strokes, polygons, curves), then inter frames
+    that remove some strokes, move the rest (motion field) and add strokes of every kind,
+    interleaved. polygons > 0 makes a format 1.2 file (one more polygon added per inter frame)."""
     rng = random.Random(seed)
     inf = inf or info()
     h = inf.header
@@ -74,6 +95,8 @@ def animation(frames=4, per_set=(6, 10, 14), seed=7, affines=3, curves=2, motion
     for si, n in enumerate(per_set):
         key += [random_stamp(rng, inf, si) for _ in range(n)]
     key += [random_affine(rng, inf) for _ in range(affines)]
+    if polygons:  # interleaved with affine strokes: they share the "shapes" layer
+        key[-1:-1] = [random_polygon(rng, inf) for _ in range(polygons)]
     key += [random_curve(rng, inf) for _ in range(curves)]
     out.append(Frame(0, KEY, added=key))
     live = len(key)
@@ -86,6 +109,8 @@ def animation(frames=4, per_set=(6, 10, 14), seed=7, affines=3, curves=2, motion
             mv = Motion(bs, cols, rows, [(rng.randrange(-20, 21), rng.randrange(-20, 21)) for _ in range(cols * rows)])
         added = [random_stamp(rng, inf), random_stamp(rng, inf, 0), random_affine(rng, inf),
                  random_stamp(rng, inf, 2), random_curve(rng, inf)]
+        if polygons:
+            added.insert(2, random_polygon(rng, inf))
         out.append(Frame(fi, INTER, removed=removed, motion=mv, added=added))
         live += len(added) - len(removed)
     return inf, out

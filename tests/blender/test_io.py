@@ -11,7 +11,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import spt_samples  # noqa: E402  (puts blender_addon on sys.path)
 
 from spt_grease_pencil.io import colors, geometry, stream_json  # noqa: E402
-from spt_grease_pencil.io.model import AFFINE, CURVE, INTER, KEY, STAMP, Frame, SptError, NeedsPack  # noqa: E402
+from spt_grease_pencil.io.model import AFFINE, CURVE, INTER, KEY, POLYGON, STAMP, Frame, SptError, NeedsPack  # noqa: E402
 from spt_grease_pencil.io.reader import apply_frames, read_bytes, read_file  # noqa: E402
 from spt_grease_pencil.io.writer import frames_from_lists, write_stored  # noqa: E402
 from spt_grease_pencil.io.model import Limits  # noqa: E402
@@ -285,7 +285,8 @@ class Columnar(Tmp):
         return p
 
     def test_live_lists_agree(self):
-        for kw in ({"frames": 6}, {"frames": 5, "motion": False}, {"frames": 3, "curves": 0, "affines": 0}):
+        for kw in ({"frames": 6}, {"frames": 5, "motion": False}, {"frames": 3, "curves": 0, "affines": 0},
+                   {"frames": 6, "polygons": 4}, {"frames": 4, "polygons": 2, "motion": False}):
             p = self.sample(**kw)
             ref = list(read_file(p).live_lists())
             f = read_file(p, columnar=True)
@@ -293,15 +294,44 @@ class Columnar(Tmp):
             self.assertEqual(got, ref)
 
     def test_rewrite_is_byte_identical(self):
-        p = self.sample(frames=6)
-        f = read_file(p, columnar=True)
-        p2 = self.path("c2.spt")
-        write_stored(p2, f.info, f.frames)
-        self.assertEqual(read_all(p), read_all(p2))
+        for polygons in (0, 4):
+            p = self.sample(frames=6, polygons=polygons)
+            f = read_file(p, columnar=True)
+            p2 = self.path("c2.spt")
+            write_stored(p2, f.info, f.frames)
+            self.assertEqual(read_all(p), read_all(p2))
+            self.assertEqual(read_file(p2).info.header.version_minor, 2 if polygons else 0)
+
+    def test_polygon_rows(self):
+        """Polygons in a StrokeTable: outline relative to P0 in the pool, X Y = P0, so moving one
+        changes X Y only (rigid, by P0's block) and keeps its pool entry."""
+        poly = (POLYGON, 1, 2, 3, 128, 4, ((160, 320), (480, 320), (300, 600), (-20, 500)))
+        curves = []
+        t = strokes_np.StrokeTable.from_tuples([poly], curves)
+        r = t.rows[0]
+        self.assertEqual((r[strokes_np.X], r[strokes_np.Y], r[strokes_np.GRID]), (160, 320, 4))
+        self.assertEqual(curves[0].tolist(), [[0, 0], [320, 0], [140, 280], [-180, 180]])
+        self.assertEqual(t.to_tuples(), [poly])
+        inf = spt_samples.info()
+        m = spt_samples.Motion(32, 5, 4, [(0, 0)] * 20)
+        m.vectors[0] = (-24, 8)  # block (0, 0) holds P0 (10, 20) px; vertex 3 lies in no other block's way
+        m.vectors[1] = (99, 99)  # block (1, 0) holds vertex 1 (30 px): must not matter
+        frames = [Frame(0, KEY, added=t), Frame(1, INTER, removed=np.zeros(0, np.uint32), motion=m,
+                                                added=strokes_np.StrokeTable(None, curves))]
+        back = [x.to_tuples() for x in state_np.apply_frames(inf.header, frames, Limits(), curves=curves)]
+        self.assertEqual(back[1], [poly[:6] + (tuple((x - 24, y + 8) for x, y in poly[6]),)])
+        self.assertEqual(len(curves), 1, "a rigid move needs no new pool entry")
+        # A move that takes a vertex (not P0) out of range is rejected, as by the reference.
+        far = (POLYGON, 1, 2, 3, 255, 0, ((16, 16), (10 - (1 << 24), 16), (16, 400)))
+        frames[0] = Frame(0, KEY, added=strokes_np.StrokeTable.from_tuples([far], curves))
+        with self.assertRaises(SptError):
+            list(state_np.apply_frames(inf.header, frames, Limits(), curves=curves))
+        with self.assertRaises(SptError):
+            list(apply_frames(inf.header, [Frame(0, KEY, added=[far]), Frame(1, INTER, motion=m)], Limits()))
 
     def test_frame_coding_agrees_with_reference(self):
-        for motion in (True, False):
-            p = self.sample(frames=6, motion=motion)
+        for motion, polygons in ((True, 0), (False, 0), (True, 3), (False, 3)):
+            p = self.sample(frames=6, motion=motion, polygons=polygons)
             ref_lists = list(read_file(p).live_lists())
             f = read_file(p, columnar=True)
             tables = list(f.live_lists())
@@ -347,6 +377,34 @@ class Columnar(Tmp):
         back = list(state_np.apply_frames(h, plain, Limits(), curves=f.curves))
         self.assertEqual([t.to_tuples() for t in back], [t.to_tuples() for t in tables])
 
+    def test_polygon_motion_is_found_again(self):
+        # Polygons moved by the painter's block field (rigidly, by P0's block) are coded with the
+        # field again, not re-sent.
+        inf = spt_samples.info()
+        rng = random.Random(5)
+        h = inf.header
+        key = [spt_samples.random_polygon(rng, inf) for _ in range(30)] + \
+              [spt_samples.random_stamp(rng, inf) for _ in range(30)]
+        frames = [Frame(0, KEY, added=key)]
+        cols, rows = -(-h.width // 32), -(-h.height // 32)
+        for fi in range(1, 5):
+            mv = spt_samples.Motion(32, cols, rows, [(rng.randrange(-30, 31), rng.randrange(-30, 31))
+                                                     for _ in range(cols * rows)])
+            added = [spt_samples.random_polygon(rng, inf) for _ in range(2)]
+            frames.append(Frame(fi, INTER, removed=sorted(rng.sample(range(55), 3)), motion=mv, added=added))
+        p = self.path("pm.spt")
+        write_stored(p, inf, frames)
+        f = read_file(p, columnar=True)
+        h = f.info.header
+        tables = list(f.live_lists())
+        got = state_np.frames_from_tables(tables, f.curves, h.width, h.height, [32])
+        self.assertTrue(all(fr.type == INTER and fr.motion is not None for fr in got[1:]))
+        self.assertTrue(any(st[0] == POLYGON for st in tables[-1].to_tuples()))
+        for fr, orig in zip(got[1:], f.frames[1:]):
+            self.assertEqual(len(fr.added), len(orig.added), "only the new strokes are sent")
+        back = list(state_np.apply_frames(h, got, Limits(), curves=f.curves))
+        self.assertEqual([t.to_tuples() for t in back], [t.to_tuples() for t in tables])
+
     def test_duplicate_strokes_still_exact(self):
         inf = spt_samples.info()
         s1 = (STAMP, 0, 0, 0, 16, 16, 1, 2, 3, 255)
@@ -361,7 +419,7 @@ class Columnar(Tmp):
 
     def test_corruption_gives_the_same_verdict(self):
         import zlib
-        data = read_all(self.sample(frames=3))
+        data = read_all(self.sample(frames=3, polygons=3))
         rng = random.Random(11)
         for _ in range(200):
             d = bytearray(data)

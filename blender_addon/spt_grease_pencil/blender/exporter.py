@@ -3,7 +3,9 @@
 Per scene frame, the strokes of the visible layers are gathered and put back in drawing order by
 their ordinal (gp_v2.py); strokes drawn by hand have none and go right after the stroke before
 them in their layer (or above the layers below theirs). Quads become stamps when they still match
-a stamp of their set size and a table orientation, affine strokes otherwise; everything else is a
+a stamp of their set size and a table orientation, affine strokes otherwise; strokes of a polygon
+material (importer.polygon_materials) are polygons of that material's alpha and grid N, with their
+points as vertices (so an edited outline exports as edited, rounded to Q4); everything else is a
 curve. All of it on numpy StrokeTables (io/strokes_np.py): the live lists are coded as key/inter
 frames (state_np.frames_from_tables: strokes that all moved with a block motion field, as in the
 painter's inter frames, are coded with that field again), written in stored mode by the Python
@@ -16,9 +18,9 @@ import time
 import numpy as np
 
 from ..io import colors, geometry_np, state_np, stream_json
-from ..io.geometry import points_to_curve
+from ..io.geometry import points_to_curve, points_to_polygon
 from ..io.model import Header, SptError, StreamInfo, default_orientations
-from ..io.strokes_np import CURVE_ID, NCOL, StrokeTable
+from ..io.strokes_np import CURVE_ID, NCOL, StrokeTable, polygon_row
 from ..io.writer import write_stored
 from ..spt_tool import pack_coded, temp_path
 from . import gp
@@ -50,28 +52,32 @@ def stream_info(obj, scene) -> StreamInfo:
 def _material_tables(obj):
     mats = list(obj.data.materials)
     tmpl = np.full(len(mats) + 1, -1, dtype=np.int64)   # last entry: stroke without material
+    grid = np.full(len(mats) + 1, -1, dtype=np.int64)   # polygon materials: their grid N
     fill_base = np.ones((len(mats) + 1, 4), dtype=np.float64)
     line_base = np.zeros((len(mats) + 1, 4), dtype=np.float64)
     line_base[:, 3] = 1.0
     for i, m in enumerate(mats):
         if m is not None and "spt_template" in m:
             tmpl[i] = int(m["spt_template"])
+        elif m is not None and "spt_polygon_grid" in m:
+            grid[i] = int(m["spt_polygon_grid"])
         fill_base[i] = gp.material_color(m, True)
         line_base[i] = gp.material_color(m, False)
-    return tmpl, fill_base, line_base
+    return tmpl, fill_base, line_base, grid
 
 
 class CurvePool:
-    """The curve pool of the exported tables, deduplicated by content so that equal curves have
-    equal rows (the frame coder matches strokes by row)."""
+    """The curve pool of the exported tables (curves, and polygon outlines relative to their
+    first vertex), deduplicated by shape and content so that equal strokes have equal rows (the
+    frame coder matches strokes by row)."""
 
     def __init__(self):
         self.curves = []
         self._ids = {}
 
-    def add(self, pts) -> int:
-        arr = np.asarray(pts, dtype=np.int32).reshape(-1, 3)
-        key = arr.tobytes()
+    def add(self, pts, columns: int = 3) -> int:
+        arr = np.asarray(pts, dtype=np.int32).reshape(-1, columns)
+        key = (columns, arr.tobytes())
         i = self._ids.get(key)
         if i is None:
             i = self._ids[key] = len(self.curves)
@@ -83,12 +89,12 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
     """The strokes of one GP frame as (rows (n, NCOL), ordinal (n,) or -1), in the frame's order;
     strokes that cannot be stored are left out with a warning."""
     h = info.header
-    tmpl_of, fill_base, line_base = tables
+    tmpl_of, fill_base, line_base, grid_of = tables
     nmat = len(tmpl_of) - 1
     n = d.count
     mi = np.where((d.material_index >= 0) & (d.material_index < nmat), d.material_index, nmat)
     t = tmpl_of[mi]
-    is_quad = (t >= 0) & (t < len(info.templates)) & (d.npoints == 4) & d.is_imported_quad
+    is_quad = (t >= 0) & (t < len(info.templates)) & (d.npoints == 4) & d.is_imported_fill
     rows = np.zeros((n, NCOL), dtype=np.int32)
     keep = np.ones(n, dtype=bool)
     q = np.flatnonzero(is_quad)
@@ -109,6 +115,15 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
             keep[i] = False
             continue
         co, pr, st, vc = d.points(i)
+        if grid_of[mi[i]] >= 0:
+            s = _polygon(co, d.fill[i], fill_base[mi[i]], int(grid_of[mi[i]]))
+            if s is None:
+                keep[i] = False
+                warnings.append(f"{where}: a polygon with fewer than 3 points or out of range was left out")
+            else:
+                rows[i] = polygon_row(*s[1:], [])
+                rows[i, CURVE_ID] = pool.add(np.asarray(s[6]) - s[6][0], 2)
+            continue
         base = line_base[mi[i]]
         vcm = vc.astype(np.float64).mean(axis=0)
         rgb = base[:3] * (1.0 - vcm[3]) + vcm[:3] * vcm[3]
@@ -124,6 +139,18 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
         rows[i] = StrokeTable.from_tuples([s]).rows[0]
         rows[i, CURVE_ID] = pool.add(s[5])
     return rows[keep], d.ordinal[keep]
+
+
+def _polygon(co, fill, base, grid):
+    """A polygon stroke from a GP stroke of a polygon material: its points are the vertices,
+    the colour is the material's fill colour mixed with vertex_color_fill (as quads), the alpha
+    the material's (a GP fill has no alpha of its own)."""
+    fc = fill.astype(np.float64)
+    rgb = base[:3] * (1.0 - fc[3]) + fc[:3] * fc[3]
+    alpha = int(np.clip(np.floor(255.0 * base[3] + 0.5), 0, 255))
+    xy = co.astype(np.float64) * 1000.0
+    return points_to_polygon(zip(xy[:, 0].tolist(), (-xy[:, 2]).tolist()),
+                             tuple(linear_to_codes(rgb).tolist()) + (alpha,), grid)
 
 
 def merge_layers(parts):

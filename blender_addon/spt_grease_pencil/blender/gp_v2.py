@@ -15,6 +15,10 @@ moving, rotating and recolouring; none of it affects a fill-only material):
   aspect[0] = 0.5 + alpha / 512      the colour's alpha (fills have no per-stroke opacity)
 Curves (GP lines, material without fill): uv_translation = (ordinal, 1); point pressure = width
 in px with line_width 1; point strength = alpha / 255.
+Polygons (format 1.2; closed, cyclic, solid fill, no line): hardness = 0.5 + ordinal * 2^-24 as
+quads, line_width 1, aspect 1; vertex_color_fill = colour. A GPv2 stroke has no fill opacity of
+its own (the shader takes the fill's alpha from the material only), so the alpha and the grid N
+live in the material: one per (alpha, N) used (polygon_material), fill_color = (1, 1, 1, alpha).
 """
 
 import bpy
@@ -85,6 +89,19 @@ def curve_material(name: str):
     return mat
 
 
+def polygon_material(name: str, alpha: int):
+    """Solid fill, no line: white with the polygons' alpha, tinted per stroke by
+    vertex_color_fill (mix 1), so vertex paint recolours a polygon as it does a quad."""
+    mat = bpy.data.materials.new(name)
+    bpy.data.materials.create_gpencil_data(mat)
+    gp = mat.grease_pencil
+    gp.show_stroke = False
+    gp.show_fill = True
+    gp.fill_style = 'SOLID'
+    gp.fill_color = (1.0, 1.0, 1.0, alpha / 255.0)
+    return mat
+
+
 def add_material(obj, mat) -> int:
     obj.data.materials.append(mat)
     return len(obj.data.materials) - 1
@@ -140,15 +157,20 @@ def frame_at_sorted(index, number: int):
 # points.add() and the point coordinates (+ uv_fill) cross into Blender, every stroke-level value
 # is one foreach_set per frame. GPv2 has no bulk access to the points of several strokes.
 
-def fill_frame(frame, is_curve, quad_co, curves, material_index, fill_rgba, ordinal, set_hint, alpha):
+QUAD, LINE, FILL = 0, 1, 2   # fill_frame's stroke shapes: template quad, curve, polygon
+
+
+def fill_frame(frame, shape, quad_co, paths, material_index, fill_rgba, ordinal, set_hint, alpha):
     """Adds n strokes to an EMPTY frame, in order.
 
-    is_curve (n,) bool; quad_co (nq, 12) float32: XYZ of the 4 corners of each quad, in order;
-    curves: per curve stroke, in order, (co (m, 3) float32, pressure (m,), strength (m,),
-    vertex_color (m, 4)); per stroke (n,): material_index, fill_rgba (n, 4) scene-linear,
-    ordinal (drawing order in the file's frame), set_hint, alpha (0..255, quads only)."""
+    shape (n,) QUAD / LINE / FILL; quad_co (nq, 12) float32: XYZ of the 4 corners of each quad,
+    in order; paths: per LINE or FILL stroke, in order: curves (co (m, 3) float32, pressure (m,),
+    strength (m,), vertex_color (m, 4)), polygons (co (m, 3),); per stroke (n,): material_index,
+    fill_rgba (n, 4) scene-linear, ordinal (drawing order in the file's frame), set_hint, alpha
+    (0..255, quads only)."""
     strokes = frame.strokes
-    n = len(is_curve)
+    shape = np.asarray(shape)
+    n = shape.shape[0]
     if n == 0:
         return
     if len(strokes):
@@ -160,7 +182,7 @@ def fill_frame(frame, is_curve, quad_co, curves, material_index, fill_rgba, ordi
         new()
     pts = [s.points for s in strokes]
     uv = UV_FILL
-    if not is_curve.any():
+    if (shape == QUAD).all():
         for p in pts:
             p.add(4)
         for p, r in zip(pts, quad_co):  # the hot loop of import
@@ -168,31 +190,39 @@ def fill_frame(frame, is_curve, quad_co, curves, material_index, fill_rgba, ordi
             p.foreach_set('uv_fill', uv)
     else:
         qi = ci = 0
-        for p, c in zip(pts, is_curve.tolist()):
-            if c:
-                co, pressure, strength, vcol = curves[ci]
-                ci += 1
-                p.add(co.shape[0])
-                p.foreach_set('co', np.ascontiguousarray(co, dtype=np.float32).ravel())
-                p.foreach_set('pressure', np.ascontiguousarray(pressure, dtype=np.float32))
-                p.foreach_set('strength', np.ascontiguousarray(strength, dtype=np.float32))
-                p.foreach_set('vertex_color', np.ascontiguousarray(vcol, dtype=np.float32).ravel())
-            else:
+        for p, k in zip(pts, shape.tolist()):
+            if k == QUAD:
                 p.add(4)
                 p.foreach_set('co', quad_co[qi])
                 p.foreach_set('uv_fill', uv)
                 qi += 1
+                continue
+            path = paths[ci]
+            ci += 1
+            co = path[0]
+            p.add(co.shape[0])
+            p.foreach_set('co', np.ascontiguousarray(co, dtype=np.float32).ravel())
+            if k == FILL:
+                # points.add() triangulated the outline while its points were all at the origin:
+                # right for convex quads only, so a polygon is triangulated again.
+                p.update()
+                continue
+            pressure, strength, vcol = path[1:]
+            p.foreach_set('pressure', np.ascontiguousarray(pressure, dtype=np.float32))
+            p.foreach_set('strength', np.ascontiguousarray(strength, dtype=np.float32))
+            p.foreach_set('vertex_color', np.ascontiguousarray(vcol, dtype=np.float32).ravel())
     # The hidden per-stroke data (module docstring), one foreach_set per property.
-    quad = ~np.asarray(is_curve, dtype=bool)
+    quad = shape == QUAD
+    fill_like = shape != LINE
     ordinal = np.asarray(ordinal, dtype=np.float64)
-    hardness = np.where(quad, 0.5 + ordinal * ORDINAL_SCALE, 1.0)
+    hardness = np.where(fill_like, 0.5 + ordinal * ORDINAL_SCALE, 1.0)
     aspect = np.ones((n, 2), dtype=np.float32)
     aspect[:, 0] = np.where(quad, 0.5 + np.asarray(alpha, dtype=np.float32) / 512.0, 1.0)
     uvt = np.zeros((n, 2), dtype=np.float32)
-    uvt[~quad, 0] = ordinal[~quad]
-    uvt[~quad, 1] = 1.0
-    fill = np.where(quad[:, None], np.asarray(fill_rgba, dtype=np.float32), 0.0)
-    for name, values, dtype in (("material_index", material_index, np.int32), ("use_cyclic", quad, bool),
+    uvt[~fill_like, 0] = ordinal[~fill_like]
+    uvt[~fill_like, 1] = 1.0
+    fill = np.where(fill_like[:, None], np.asarray(fill_rgba, dtype=np.float32), 0.0)
+    for name, values, dtype in (("material_index", material_index, np.int32), ("use_cyclic", fill_like, bool),
                                 ("vertex_color_fill", fill, np.float32), ("hardness", hardness, np.float32),
                                 ("line_width", np.where(quad, np.asarray(set_hint) + 1, 1), np.int32),
                                 ("aspect", aspect, np.float32), ("uv_translation", uvt, np.float32)):
@@ -203,9 +233,9 @@ def fill_frame(frame, is_curve, quad_co, curves, material_index, fill_rgba, ordi
 
 class FrameData:
     """One GP frame read back in bulk: per stroke material index, point count, fill colour, line
-    width, the decoded hidden data (is_imported_quad, ordinal or -1, set_hint, alpha) and the
-    corners (n, 12) of 4-point strokes. Other strokes' points are read one by one on request
-    (hand-drawn strokes: few)."""
+    width, the decoded hidden data (is_imported_fill: an imported quad or polygon; ordinal or -1,
+    set_hint, alpha) and the corners (n, 12) of 4-point strokes. Other strokes' points are read
+    one by one on request (hand-drawn strokes and polygons: few)."""
 
     def __init__(self, frame):
         strokes = frame.strokes
@@ -226,13 +256,13 @@ class FrameData:
             strokes.foreach_get('uv_translation', uvt)
         self.fill = self.fill.reshape(n, 4)
         # The hidden per-stroke data (module docstring) decoded.
-        self.is_imported_quad = self.hardness < 1.0
+        self.is_imported_fill = self.hardness < 1.0
         ax = aspect[0::2].astype(np.float64)
         self.alpha = np.where(ax >= 0.999, 255, np.clip(np.floor((ax - 0.5) * 512 + 0.5), 0, 255)).astype(np.int64)
         self.set_hint = self.line_width.astype(np.int64) - 1
         uvt = uvt.reshape(n, 2)
         quad_ord = np.floor((self.hardness.astype(np.float64) - 0.5) * 2.0 ** 24 + 0.5)
-        self.ordinal = np.where(self.is_imported_quad, quad_ord,
+        self.ordinal = np.where(self.is_imported_fill, quad_ord,
                                 np.where(uvt[:, 1] == 1.0, uvt[:, 0], -1)).astype(np.int64)
         self._pts = pts = [s.points for s in strokes]
         self.npoints = np.fromiter(map(len, pts), dtype=np.int64, count=n)

@@ -1,7 +1,7 @@
 """File > Import > Stroke animation (.spt): builds one Grease Pencil object from a file.
 
-Layering: one layer per stroke set, coarse (bottom) to fine (top), then "shapes" (affine strokes)
-and "curves": an artist can hide, lock or retouch the detail pass apart from the under-painting.
+Layering: one layer per stroke set, coarse (bottom) to fine (top), then "shapes" (affine and
+polygon strokes, in their drawing order: shape painters overlap them) and "curves": an artist can hide, lock or retouch the detail pass apart from the under-painting.
 The file's exact drawing order is kept per stroke (its ordinal, see gp_v2.py), so export restores
 it even though inter frames interleave sets. layering='SINGLE' puts everything in one layer, whose
 viewport order is then exactly the file's.
@@ -13,9 +13,9 @@ import time
 import numpy as np
 
 from ..io import colors, geometry_np, stream_json
-from ..io.model import AFFINE, CURVE, STAMP, NeedsPack, SptError
+from ..io.model import AFFINE, CURVE, POLYGON, STAMP, NeedsPack, SptError
 from ..io.reader import read_file
-from ..io.strokes_np import A, B, CURVE_ID, G, KIND, R, SET, TMPL
+from ..io.strokes_np import A, B, CURVE_ID, G, GRID, KIND, R, SET, TMPL, polygon_vertices
 from ..spt_tool import pack_stored, temp_path
 from . import gp
 
@@ -81,7 +81,30 @@ def _layer_keys(rows, layering, nsets):
     if layering == 'SINGLE':
         return np.zeros(rows.shape[0], dtype=np.int64)
     kind = rows[:, KIND]
-    return np.where(kind == STAMP, rows[:, SET], np.where(kind == AFFINE, nsets, nsets + 1)).astype(np.int64)
+    shapes = (kind == AFFINE) | (kind == POLYGON)
+    return np.where(kind == STAMP, rows[:, SET], np.where(shapes, nsets, nsets + 1)).astype(np.int64)
+
+
+def _polygon_key(rows):
+    """Per row, alpha * 17 + grid N: the polygon material a polygon row uses."""
+    return rows[:, A].astype(np.int64) * 17 + rows[:, GRID]
+
+
+def polygon_materials(obj, name, tables):
+    """One material per (alpha, grid N) the polygons use (gp_v2.py: a GP fill takes its alpha from
+    the material only); returns the lookup array key (_polygon_key) -> material index."""
+    keys = set()
+    for t in tables:
+        poly = t.rows[:, KIND] == POLYGON
+        if poly.any():
+            keys.update(np.unique(_polygon_key(t.rows[poly])).tolist())
+    lookup = np.full(256 * 17, -1, dtype=np.int32)
+    for k in sorted(keys):
+        alpha, grid = divmod(k, 17)
+        mat = gp.polygon_material(f"{name} polygon alpha {alpha} grid {grid}", alpha)
+        mat["spt_polygon_grid"] = grid
+        lookup[k] = gp.add_material(obj, mat)
+    return lookup
 
 
 def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', progress=None):
@@ -109,6 +132,7 @@ def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', 
     cmat["spt_curve"] = 1
     cmat_index = gp.add_material(obj, cmat)
     mat_of_tmpl = np.array(tmat + [cmat_index], dtype=np.int32)
+    mat_of_poly = polygon_materials(obj, name, tables)
 
     # Layers bottom to top: the stroke sets used (coarse to fine), shapes, curves; or one layer.
     nsets = len(h.sets)
@@ -128,7 +152,7 @@ def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', 
     start = context.scene.frame_start
     total_strokes = 0
     for fi, table in enumerate(tables):
-        _fill_frame(table, start + fi, layer_of, layering, h, mat_of_tmpl, cmat_index)
+        _fill_frame(table, start + fi, layer_of, layering, h, mat_of_tmpl, cmat_index, mat_of_poly)
         total_strokes += len(table)
         if progress:
             progress(fi + 1, len(tables))
@@ -149,32 +173,45 @@ def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', 
     return obj, summary
 
 
-def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index):
+def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index, mat_of_poly):
     """One file frame: a GP frame on every layer (an empty one where the layer has nothing, so
     the previous frame does not stay visible), each with its strokes in drawing order."""
     rows = table.rows
     n = rows.shape[0]
-    is_curve = rows[:, KIND] == CURVE
+    kind = rows[:, KIND]
+    is_curve = kind == CURVE
+    is_poly = kind == POLYGON
+    quad = ~(is_curve | is_poly)
+    shape = np.where(quad, gp.QUAD, np.where(is_curve, gp.LINE, gp.FILL))
     corners = np.zeros((n, 4, 3), dtype=np.float32)
-    quad = ~is_curve
     if quad.any():
         c = geometry_np.table_corners(rows[quad], h.sets, h.orientations) / 1000.0  # metres
         corners[quad, :, 0] = c[:, :, 0]
         corners[quad, :, 2] = -c[:, :, 1]
     fill = np.ones((n, 4), dtype=np.float32)
     fill[:, 0:3] = LINEAR[rows[:, R:B + 1]]
-    material = np.where(is_curve, cmat_index, mat_of_tmpl[np.where(is_curve, 0, rows[:, TMPL])])
+    material = np.where(is_curve, cmat_index, mat_of_tmpl[np.where(quad, rows[:, TMPL], 0)])
+    material = np.where(is_poly, mat_of_poly[_polygon_key(rows) % mat_of_poly.shape[0]], material)
     keys = _layer_keys(rows, layering, len(h.sets))
     for k, layer in layer_of.items():
         frame = gp.new_frame(layer, number)
         idx = np.flatnonzero(keys == k)
         if idx.size == 0:
             continue
-        sub_curve = is_curve[idx]
-        curves = [_curve_points(table, i) for i in idx[sub_curve].tolist()]
-        qidx = idx[~sub_curve]
-        gp.fill_frame(frame, sub_curve, corners[qidx].reshape(-1, 12), curves, material[idx], fill[idx],
+        paths = [_curve_points(table, i) if is_curve[i] else _polygon_points(table, i)
+                 for i in idx[~quad[idx]].tolist()]
+        qidx = idx[quad[idx]]
+        gp.fill_frame(frame, shape[idx], corners[qidx].reshape(-1, 12), paths, material[idx], fill[idx],
                       idx, rows[idx, SET], rows[idx, A])
+
+
+def _polygon_points(table, i):
+    """GP points of polygon stroke i: (co metres,), the outline in file order."""
+    v = polygon_vertices(table.rows, table.curves, i).astype(np.float64) / 16000.0
+    co = np.zeros((v.shape[0], 3), dtype=np.float32)
+    co[:, 0] = v[:, 0]
+    co[:, 2] = -v[:, 1]
+    return (co,)
 
 
 def _curve_points(table, i):

@@ -111,3 +111,22 @@ def points_to_curve(points, rgba):
     if not pts:
         return None
     return (2,) + tuple(rgba) + (tuple(pts),)
+
+
+def polygon_points(stroke) -> List[Tuple[float, float]]:
+    """(x px, y px) per vertex of a polygon stroke."""
+    return [(x / 16.0, y / 16.0) for (x, y) in stroke[6]]
+
+
+def points_to_polygon(points, rgba, grid: int):
+    """A polygon stroke (format 1.2) from (x px, y px) vertices rounded to Q4; None when it has
+    fewer than 3 vertices, one out of range, or a reserved grid N."""
+    pts = []
+    for (x, y) in points:
+        qx, qy = _q4(x), _q4(y)
+        if abs(qx) > MAX_POS or abs(qy) > MAX_POS:
+            return None
+        pts.append((qx, qy))
+    if len(pts) < 3 or grid == 1 or not 0 <= grid <= 16:
+        return None
+    return (3,) + tuple(rgba) + (grid, tuple(pts))

@@ -280,7 +280,7 @@ def _parse_frame(p, path, off, info, limits, curves=None) -> Frame:
         from . import strokes_np
         fr.added, pos = strokes_np.parse_records(body, pos, count, path, base, len(info.templates),
                                                  len(info.header.sets), len(info.header.orientations),
-                                                 limits.max_curve_points, curves)
+                                                 limits.max_curve_points, curves, limits.max_polygon_vertices)
     else:
         fr.added, pos = parse_strokes(body, pos, count, path, base, info, limits)
     if pos != n:

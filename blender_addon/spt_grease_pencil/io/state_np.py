@@ -6,7 +6,7 @@ reference), matching strokes by a 64-bit row hash that is then verified exactly.
 
 import numpy as np
 
-from .model import CURVE, INTER, KEY, MAX_POS, Frame, Motion, SptError
+from .model import CURVE, INTER, KEY, MAX_POS, POLYGON, Frame, Motion, SptError
 from .strokes_np import KIND, NCOL, X, Y, CURVE_ID, StrokeTable
 
 
@@ -44,8 +44,22 @@ def _block_vectors(m, x, y):
     return vec[by * m.cols + bx]
 
 
+def polygons_fit(rows, d, curves) -> bool:
+    """True when every polygon row moved by d (n, 2) keeps all its vertices in range (SPEC.md 4).
+    Its position X Y (= P0) is checked with the other strokes; here the rest of the outline."""
+    moved = np.flatnonzero((rows[:, KIND] == POLYGON) & d.any(axis=1))
+    for i in moved.tolist():
+        v = curves[rows[i, CURVE_ID]]
+        x0, y0 = int(rows[i, X]) + int(d[i, 0]), int(rows[i, Y]) + int(d[i, 1])
+        if (max(abs(x0 + int(v[:, 0].min())), abs(x0 + int(v[:, 0].max()))) > MAX_POS
+                or max(abs(y0 + int(v[:, 1].min())), abs(y0 + int(v[:, 1].max()))) > MAX_POS):
+            return False
+    return True
+
+
 def move_rows(rows, m, curves, path="<memory>", index=0):
-    """Every stroke moved by the vector of the block holding its position (curves: per point).
+    """Every stroke moved by the vector of the block holding its position (curves: per point;
+    polygons: rigidly by P0's block, i.e. like a stamp, their outline being relative to P0).
     Moved curves get new pool entries; the input rows are not modified."""
     out = rows.copy()
     d = _block_vectors(m, rows[:, X].astype(np.int64), rows[:, Y].astype(np.int64))
@@ -53,7 +67,7 @@ def move_rows(rows, m, curves, path="<memory>", index=0):
     d[is_curve] = 0
     nx = rows[:, X].astype(np.int64) + d[:, 0]
     ny = rows[:, Y].astype(np.int64) + d[:, 1]
-    if (np.abs(nx) > MAX_POS).any() or (np.abs(ny) > MAX_POS).any():
+    if (np.abs(nx) > MAX_POS).any() or (np.abs(ny) > MAX_POS).any() or not polygons_fit(rows, d, curves):
         raise SptError(f"{path}: frame {index}: motion moves a stroke out of range")
     out[:, X] = nx
     out[:, Y] = ny
@@ -149,7 +163,7 @@ def find_motion(prev_rows, cur_rows, width, height, block_sizes, curves, prev_id
     3. The whole previous list moved by that field is matched exactly against cur (kept_prefix),
        so the result is exact whatever went wrong in 1 and 2; a worse field only costs bytes.
     Curves must stay in place (their points would move per point): a field that would move one
-    is rejected. prev_ident / cur_ident: (identity rows, their row_hashes), cached by the caller.
+    is rejected. Polygons move rigidly by their first vertex's block, like stamps (strokes_np). prev_ident / cur_ident: (identity rows, their row_hashes), cached by the caller.
     """
     ip, iph = prev_ident or (identity_rows(prev_rows), None)
     ic, ich = cur_ident or (identity_rows(cur_rows), None)
@@ -183,7 +197,7 @@ def find_motion(prev_rows, cur_rows, width, height, block_sizes, curves, prev_id
         dv = _block_vectors(m, prev_rows[:, X].astype(np.int64), prev_rows[:, Y].astype(np.int64))
         dv[~pquad] = 0
         nx, ny = prev_rows[:, X] + dv[:, 0], prev_rows[:, Y] + dv[:, 1]
-        if (np.abs(nx) > MAX_POS).any() or (np.abs(ny) > MAX_POS).any():
+        if (np.abs(nx) > MAX_POS).any() or (np.abs(ny) > MAX_POS).any() or not polygons_fit(prev_rows, dv, curves):
             continue
         moved[:, X], moved[:, Y] = nx, ny
         L, kept = kept_prefix(moved, cur_rows)

@@ -4,15 +4,23 @@ The reference code (reader.py, writer.py, geometry.py) keeps one Python tuple pe
 is simple and needs only the standard library, but costs microseconds per stroke; a 2-million
 stroke animation needs the vectorised form. A StrokeTable holds one int32 row per stroke:
 
-    KIND SET TMPL ORIENT X Y MA MB MC MD R G B A CURVE
+    KIND SET TMPL ORIENT X Y MA MB MC MD R G B A CURVE GRID
 
-stamp:  SET TMPL ORIENT, X Y = position (Q4); MA..MD = 0
-affine: TMPL, X Y = translation (Q4), MA MB MC MD = matrix (a b c d, Q4); SET = ORIENT = 0
-curve:  CURVE = index into a pool (a list of (n, 3) int32 arrays of x, y, width in Q4) shared by
-        the tables of one file; every other geometry column 0.
+stamp:   SET TMPL ORIENT, X Y = position (Q4); MA..MD = 0
+affine:  TMPL, X Y = translation (Q4), MA MB MC MD = matrix (a b c d, Q4); SET = ORIENT = 0
+curve:   CURVE = index into a pool (a list of int32 arrays) shared by the tables of one file:
+         (n, 3) x, y, width in Q4; every other geometry column 0.
+polygon: X Y = the first vertex P0 (Q4), GRID = supersampling N, CURVE = pool entry (n, 2) of
+         every vertex RELATIVE to P0 (so its first row is 0, 0).
 
-Unused columns are always 0, so two rows are equal exactly when the strokes are (curves: when
-their pool entries are the same entry; writers that compare curves dedupe the pool by content).
+A polygon keeps its outline relative to P0 because it moves rigidly by P0's motion block
+(SPEC.md 5): moving it changes X Y only, exactly like a stamp, so motion is vectorised, the pool
+entry is shared by every frame the polygon lives in, and the exporter's motion search
+(state_np.find_motion) finds polygon motion with no extra code.
+
+Unused columns are always 0, so two rows are equal exactly when the strokes are (curves and
+polygons: when their pool entries are the same entry; writers that compare strokes dedupe the
+pool by content and shape).
 tests/blender/test_io.py checks this module against the reference on the same files.
 """
 
@@ -20,10 +28,10 @@ import struct
 
 import numpy as np
 
-from .model import AFFINE, CURVE, MAX_CURVE_WIDTH, MAX_MATRIX, MAX_POS, STAMP, SptError
+from .model import AFFINE, CURVE, MAX_CURVE_WIDTH, MAX_MATRIX, MAX_POS, POLYGON, STAMP, SptError
 
-KIND, SET, TMPL, ORIENT, X, Y, MA, MB, MC, MD, R, G, B, A, CURVE_ID = range(15)
-NCOL = 15
+KIND, SET, TMPL, ORIENT, X, Y, MA, MB, MC, MD, R, G, B, A, CURVE_ID, GRID = range(16)
+NCOL = 16
 
 STAMP_DT = np.dtype([("k", "u1"), ("s", "u1"), ("t", "u1"), ("o", "u1"), ("x", "<i4"), ("y", "<i4"),
                      ("r", "u1"), ("g", "u1"), ("b", "u1"), ("a", "u1")])
@@ -32,6 +40,24 @@ AFFINE_DT = np.dtype([("k", "u1"), ("t", "u1"), ("x", "<i4"), ("y", "<i4"), ("ma
 assert STAMP_DT.itemsize == 16 and AFFINE_DT.itemsize == 30
 _CURVE_HEAD = struct.Struct("<BBBBBI")
 _POINT_DT = np.dtype([("x", "<i4"), ("y", "<i4"), ("w", "<u4")])
+_POLYGON_HEAD = struct.Struct("<BBBBBBI")  # kind, r, g, b, a, grid N, n
+_VERTEX_DT = np.dtype([("x", "<i4"), ("y", "<i4")])
+
+
+def polygon_vertices(rows, curves, i) -> np.ndarray:
+    """(n, 2) int64 absolute Q4 vertices of polygon row i."""
+    r = rows[i]
+    v = curves[r[CURVE_ID]].astype(np.int64)
+    return v + np.array([r[X], r[Y]], dtype=np.int64)
+
+
+def polygon_row(r, g, b, a, grid, vertices, curves) -> np.ndarray:
+    """One polygon row; appends the outline relative to its first vertex to the pool `curves`."""
+    v = np.asarray(vertices, dtype=np.int64).reshape(-1, 2)
+    row = np.zeros(NCOL, dtype=np.int32)
+    row[[KIND, X, Y, R, G, B, A, GRID, CURVE_ID]] = (POLYGON, v[0, 0], v[0, 1], r, g, b, a, grid, len(curves))
+    curves.append((v - v[0]).astype(np.int32))
+    return row
 
 
 class StrokeTable:
@@ -58,6 +84,9 @@ class StrokeTable:
                 out.append((STAMP, r[SET], r[TMPL], r[ORIENT], r[X], r[Y], r[R], r[G], r[B], r[A]))
             elif k == AFFINE:
                 out.append((AFFINE, r[TMPL], r[X], r[Y], r[MA], r[MB], r[MC], r[MD], r[R], r[G], r[B], r[A]))
+            elif k == POLYGON:
+                v = self.curves[r[CURVE_ID]].astype(np.int64) + np.array([r[X], r[Y]], dtype=np.int64)
+                out.append((POLYGON, r[R], r[G], r[B], r[A], r[GRID], tuple(tuple(p) for p in v.tolist())))
             else:
                 pts = tuple(tuple(p) for p in self.curves[r[CURVE_ID]].tolist())
                 out.append((CURVE, r[R], r[G], r[B], r[A], pts))
@@ -73,6 +102,8 @@ class StrokeTable:
                 rows[i, [KIND, SET, TMPL, ORIENT, X, Y, R, G, B, A]] = s
             elif k == AFFINE:
                 rows[i, [KIND, TMPL, X, Y, MA, MB, MC, MD, R, G, B, A]] = s
+            elif k == POLYGON:
+                rows[i] = polygon_row(s[1], s[2], s[3], s[4], s[5], s[6], curves)
             else:
                 rows[i, [KIND, R, G, B, A]] = s[:5]
                 rows[i, CURVE_ID] = len(curves)
@@ -113,7 +144,7 @@ def _err(path, offset, what):
 
 
 def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: int, nsets: int,
-                  norients: int, max_curve_points: int, curves: list):
+                  norients: int, max_curve_points: int, curves: list, max_polygon_vertices: int = 1 << 16):
     """Parses `count` stroke records of a stored frame body from `pos`; returns (table, pos).
     Errors name the byte offset (base + position in the body) of the offending record."""
     buf = np.frombuffer(body, dtype=np.uint8)
@@ -195,10 +226,22 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
             pieces.append(row)
             pos += 9 + 12 * npts
             done += 1
-        elif kind == 3:
-            # Polygon strokes (format 1.2) have no column layout yet: the tuple reader
-            # (columnar=False) decodes them.
-            raise _err(path, base + pos, "polygon strokes (format 1.2) need the reference reader (columnar=False)")
+        elif kind == POLYGON:
+            if pos + 10 > n:
+                raise _err(path, base + pos, "truncated polygon stroke")
+            _, r, g, b, a, grid, npts = _POLYGON_HEAD.unpack_from(body, pos)
+            if grid == 1 or grid > 16:
+                raise _err(path, base + pos, f"polygon supersampling {grid} is reserved")
+            if npts < 3 or npts > max_polygon_vertices:
+                raise _err(path, base + pos, f"polygon stroke has {npts} vertices (allowed 3..{max_polygon_vertices})")
+            if pos + 10 + 8 * npts > n:
+                raise _err(path, base + pos, f"polygon stroke of {npts} vertices runs past the frame body")
+            v = np.frombuffer(body, dtype=_VERTEX_DT, count=npts, offset=pos + 10)
+            if (np.abs(v["x"]) > MAX_POS).any() or (np.abs(v["y"]) > MAX_POS).any():
+                raise _err(path, base + pos, "polygon vertex out of range")
+            pieces.append(polygon_row(r, g, b, a, grid, np.stack([v["x"], v["y"]], axis=1), curves)[None, :])
+            pos += 10 + 8 * npts
+            done += 1
         else:
             raise _err(path, base + pos, f"unknown stroke kind {kind}")
     rows = np.concatenate(pieces) if len(pieces) > 1 else (pieces[0] if pieces else np.zeros((0, NCOL), np.int32))
@@ -238,6 +281,12 @@ def records_bytes(rows, curves) -> bytes:
                 pts = curves[row[CURVE_ID]]
                 out.append(_CURVE_HEAD.pack(CURVE, row[R], row[G], row[B], row[A], pts.shape[0]))
                 out.append(np.ascontiguousarray(pts, dtype="<i4").tobytes())
+        elif k == POLYGON:
+            for i in range(r.shape[0]):
+                v = polygon_vertices(r, curves, i)
+                row = r[i].tolist()
+                out.append(_POLYGON_HEAD.pack(POLYGON, row[R], row[G], row[B], row[A], row[GRID], v.shape[0]))
+                out.append(np.ascontiguousarray(v, dtype="<i4").tobytes())
         else:
             raise SptError(f"unknown stroke kind {k}")
     return b"".join(out)

@@ -98,11 +98,16 @@ def frame_payload(fr: Frame) -> bytes:
     return b"".join(body)
 
 
+def _has_polygon(added) -> bool:
+    if hasattr(added, "rows"):  # a StrokeTable (columnar mode): KIND is column 0
+        return bool((added.rows[:, 0] == POLYGON).any())
+    return any(st[0] == POLYGON for st in added)
+
+
 def write_stored(path: str, info: StreamInfo, frames: List[Frame]) -> int:
     """Writes a complete stored-mode file (HEAD, TMPL*, meta, rois, FRAM*, indx, IEND).
     Returns the number of bytes written."""
-    minor = 2 if any(not hasattr(f.added, "record_bytes") and any(st[0] == POLYGON for st in f.added)
-                     for f in frames) else 0
+    minor = 2 if any(_has_polygon(f.added) for f in frames) else 0
     parts = [chunks.SIGNATURE, chunks.chunk_bytes(b"HEAD", head_payload(info, len(frames), minor))]
     for t in info.templates:
         parts.append(chunks.chunk_bytes(b"TMPL", tmpl_payload(t)))
