@@ -79,6 +79,21 @@ TEST(SvgInBrowser, ShapePaintingMatchesRenderer) {
     EXPECT_GE(p, 30.0);  // edges differ: browsers anti-alias, spt samples pixel centres
 }
 
+TEST(SvgInBrowser, PolygonsMatchRenderer) {
+    if (!have_tools()) GTEST_SKIP() << "needs " << kChromium << " and the spt tool";
+    // geometrize's rotated ellipses import as 20-vertex polygon strokes (format 1.2).
+    const std::string f = std::string(SPT_MEDIA_DIR) + "/foreign/coffee-geometrize-rotellipses.svg";
+    if (!fs::exists(f)) GTEST_SKIP() << "media missing: " << f;
+    auto doc = import::import_path(f, "");
+    ASSERT_TRUE(doc.ok()) << doc.error().message;
+    size_t polygons = 0;
+    for (const auto& s : doc->frames.back().added) polygons += s.kind == StrokeKind::Polygon;
+    ASSERT_GE(polygons, 250u);
+    const double p = browser_psnr(*doc, "polygons");
+    std::printf("chromium vs spt render, geometrize rotated ellipses as polygons: PSNR %.2f dB\n", p);
+    EXPECT_GE(p, 28.0);  // browsers anti-alias the edges that spt samples at pixel centres
+}
+
 TEST(SvgInBrowser, BitmapStampsAndCurvesMatchRenderer) {
     if (!have_tools()) GTEST_SKIP() << "needs " << kChromium << " and the spt tool";
     import::Document d;
