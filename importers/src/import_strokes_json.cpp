@@ -261,7 +261,8 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
         e = c.err(*type, where + ": unknown stroke type \"" + t + "\" (stamp, affine, shape, polygon, curve)");
         return false;
     }
-    if (t != "shape" && t != "polygon") ++rep.shapes;
+    // "shape" and version-1 "polygon" count their shape above; every other entry is one shape.
+    if (t != "shape" && (t != "polygon" || c.version >= 2)) ++rep.shapes;
     return true;
 }
 

@@ -320,6 +320,18 @@ TEST(RoundTrip, ShapeStrokesAndDefaultTemplates) {
     EXPECT_EQ(s[2].affine.tmpl, 2);
 }
 
+TEST(ImportJson, Version2PolygonIsOneStrokeAndOneShape) {
+    const char* js =
+        "{\"format\": \"spt-strokes\", \"version\": 2, \"canvas\": {\"width\": 40, \"height\": 30},\n"
+        " \"strokes\": [{\"type\": \"polygon\", \"points\": [[0,0],[30,2],[3,25],[1,9]], \"color\": [9,80,200]}]}";
+    auto d = import_text("v2poly.json", js);
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    ASSERT_EQ(d->frames[0].added.size(), 1u);
+    EXPECT_EQ(d->frames[0].added[0].kind, StrokeKind::Polygon);
+    EXPECT_EQ(d->report.shapes, 1u);
+    EXPECT_EQ(d->report.strokes, 1u);
+}
+
 TEST(Document, DropUnusedTablesKeepsThePixels) {
     // Templates 0 and 1 unused (2 is the triangle), no stamps: one template and one orientation
     // are left, the stroke's template id follows, and every pixel stays the same.
