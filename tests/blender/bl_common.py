@@ -53,3 +53,23 @@ def fail(msg):
 def check(cond, msg):
     if not cond:
         fail(msg)
+
+
+def import_spt(path, layering='SETS'):
+    """Imports `path` with the add-on's operator; returns the one new Grease Pencil object."""
+    before = set(bpy.data.objects)
+    r = bpy.ops.import_scene.spt(filepath=path, layering=layering)
+    check(r == {'FINISHED'}, f"import returned {r}")
+    new = [o for o in bpy.data.objects if o not in before and o.type == 'GPENCIL']
+    check(len(new) == 1, "import made one Grease Pencil object")
+    return new[0]
+
+
+def export_spt(obj, path, stored=True):
+    """Exports `obj` to `path`; returns the file's live stroke lists when stored (read back with
+    the add-on's own reader), else None."""
+    from spt_grease_pencil.io import read_file
+    bpy.context.view_layer.objects.active = obj
+    r = bpy.ops.export_scene.spt(filepath=path, stored=stored)
+    check(r == {'FINISHED'}, f"export returned {r}")
+    return list(read_file(path).live_lists()) if stored else None

@@ -31,20 +31,8 @@ C.check(all(any(s[0] == POLYGON for s in lst) for lst in orig_lists), "every fra
 can_render = C.spt_works(spt, "render") and C.spt_works(spt, "pack")
 
 
-def import_(path, layering='SETS'):
-    before = set(bpy.data.objects)
-    r = bpy.ops.import_scene.spt(filepath=path, layering=layering)
-    C.check(r == {'FINISHED'}, f"import returned {r}")
-    new = [o for o in bpy.data.objects if o not in before and o.type == 'GPENCIL']
-    C.check(len(new) == 1, "import made one Grease Pencil object")
-    return new[0]
-
-
-def export_(obj, path, stored=True):
-    bpy.context.view_layer.objects.active = obj
-    r = bpy.ops.export_scene.spt(filepath=path, stored=stored)
-    C.check(r == {'FINISHED'}, f"export returned {r}")
-    return list(read_file(path).live_lists()) if stored else None
+import_ = C.import_spt
+export_ = C.export_spt
 
 
 def gp_frame(layer, number):
