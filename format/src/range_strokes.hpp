@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_predict.hpp"
 #include "range_coder.hpp"
 #include "spt/limits.hpp"
 #include "spt/types.hpp"
@@ -29,6 +30,32 @@ struct PosModel {
         pix.reset(bit_length(extent - 1));
         outside = SIntModel();
         for (auto& q : frac) q = kProbInit;
+    }
+};
+
+// Contexts and predictors of polygon strokes (format 1.2, SPEC.md 7.4 step 5). Fixed-size, so
+// that the encoder can copy them cheaply to measure the bits of each prediction mode.
+struct PolygonModels {
+    UIntModel points;
+    uint16_t same_aa = kProbInit;
+    uint16_t aa[32];
+    uint16_t shift[8];
+    uint16_t conic = kProbInit, second = kProbInit;  // the prediction mode
+    SIntModel dx[2], dy[2];                          // modes 0 and 1
+    // mode 2, conic
+    uint16_t conic_same = kProbInit;
+    UIntModel conic_c;                               // 2^30 - C
+    SIntModel conic_s;
+    uint16_t conic_shift[8];
+    SIntModel conic_m[4];                            // a, b, c, d
+    SIntModel conic_rx, conic_ry;                    // residuals, in lattice steps
+    // predictors
+    uint32_t prev_aa = 0;
+    int64_t prev_cs[2] = {0, 0};                     // (C, S) of the previous conic polygon
+    PolygonModels() {
+        for (auto& q : aa) q = kProbInit;
+        for (auto& q : shift) q = kProbInit;
+        for (auto& q : conic_shift) q = kProbInit;
     }
 };
 
@@ -54,28 +81,18 @@ struct StrokeCoderState {
     BitTree matrix_shift;
     UIntModel points;
     SIntModel width0, dx, dy, dw;
-    // polygons (format 1.2, SPEC.md 7.4 step 5)
-    UIntModel poly_points;
-    uint16_t poly_same_aa;
-    BitTree poly_aa;
-    BitTree poly_shift;
-    uint16_t poly_second;
-    SIntModel poly_dx[2], poly_dy[2];  // by prediction mode
+    PolygonModels poly;               // polygons (format 1.2, SPEC.md 7.4 step 5)
     // predictors
     int prev_kind = 0;
     int prev_set = 0;
     int prev_orient[16] = {};
     Rgb8 prev_color{128, 128, 128};
     int64_t prev_width0 = 0;
-    uint32_t prev_poly_aa = 0;
     uint32_t grid_w = 0, grid_h = 0;
     std::vector<uint32_t> grid;       // 0 = empty, else 0x01RRGGBB
 
     explicit StrokeCoderState(const StreamShape& sh) : shape(sh) {
         for (int i = 0; i < 4; ++i) kind0[i] = kind1[i] = kind2[i] = kProbInit;
-        poly_same_aa = poly_second = kProbInit;
-        poly_aa.reset(5);
-        poly_shift.reset(3);
         same_set = opaque = kProbInit;
         set_tree.reset(4);
         const int tb = sh.templates ? bit_length(sh.templates - 1) : 0;
@@ -202,23 +219,104 @@ SPT_CODER_INLINE bool code_affine_matrix(C& c, StrokeCoderState& st, AffineStrok
     return true;
 }
 
-// Polygon geometry (SPEC.md 7.4, polygon 5): vertex count, supersampling, first vertex, then
-// the differences between consecutive vertices in units of 2^shift, each predicted as zero
-// (mode 0) or as the previous difference (mode 1, smooth outlines such as 20-gon ellipses).
-// The encoder picks the mode with the smaller sum of residual magnitudes.
+// Conic outline (SPEC.md 7.4, polygon 5, mode 2): the rotation (C, S) unless it repeats the
+// previous conic polygon's, the matrix M with its shift, then per vertex the residual against
+// P_0 + M (unit_i - unit_0) in lattice steps. The encoder codes `plan`; the decoder fills `pts`.
+template <class C>
+SPT_CODER_INLINE bool code_conic_outline(C& c, PolygonModels& pm, const PolygonPlan& plan, uint32_t shift,
+                                         std::vector<PolygonVertex>& pts, SyntaxError& err) {
+    int64_t rc = pm.prev_cs[0], rs = pm.prev_cs[1];
+    if (c.bit(pm.conic_same, (plan.cs[0] != rc || plan.cs[1] != rs) ? 1 : 0)) {
+        const uint64_t dc = code_uint(c, pm.conic_c, uint64_t(kConicOne - plan.cs[0]));
+        if (dc > uint64_t(2 * kConicMaxCS)) { err.set("conic rotation C below -2^30"); return false; }
+        const int64_t nc = kConicOne - int64_t(dc);
+        const int64_t ns = code_sint(c, pm.conic_s, plan.cs[1]);
+        if (ns < -kConicMaxCS || ns > kConicMaxCS) { err.set("conic rotation S outside +-2^30"); return false; }
+        if (nc == rc && ns == rs) { err.set("conic rotation coded anew repeats the previous one"); return false; }
+        rc = pm.prev_cs[0] = nc;
+        rs = pm.prev_cs[1] = ns;
+    }
+    const uint32_t t = code_tree(c, pm.conic_shift, 3, plan.matrix_shift);
+    if (t > 4) { err.set("conic matrix shift " + std::to_string(t) + " is reserved"); return false; }
+    bool could_shift_more = t < 4;
+    int64_t m[4];
+    for (int k = 0; k < 4; ++k) {
+        const int64_t v = code_sint(c, pm.conic_m[k], plan.m[k] >> t);
+        if (v < -(kConicMaxMatrix >> t) || v > (kConicMaxMatrix >> t)) { err.set("conic matrix entry outside +-2^26"); return false; }
+        if (v & 1) could_shift_more = false;
+        m[k] = v * (int64_t(1) << t);
+    }
+    if (could_shift_more) { err.set("conic matrix shift is not the largest"); return false; }
+    const int64_t x0 = pts[0].x, y0 = pts[0].y;
+    bool lattice_more = shift < 4;  // every offset a multiple of 2^(shift+1): not canonical
+    int64_t u = kConicOne, v = 0;
+    for (size_t i = 1; i < pts.size(); ++i) {
+        conic_rotate(rc, rs, u, v);
+        const int64_t du = u - kConicOne;
+        const int64_t pe = conic_steps(m[0], m[1], du, v, shift), pf = conic_steps(m[2], m[3], du, v, shift);
+        const int64_t ex = C::kDecoding ? 0 : (int64_t(pts[i].x) - x0) >> shift;
+        const int64_t ey = C::kDecoding ? 0 : (int64_t(pts[i].y) - y0) >> shift;
+        const int64_t e = pe + code_sint(c, pm.conic_rx, ex - pe);
+        const int64_t f = pf + code_sint(c, pm.conic_ry, ey - pf);
+        if ((e | f) & 1) lattice_more = false;
+        const int64_t x = x0 + e * (int64_t(1) << shift), y = y0 + f * (int64_t(1) << shift);
+        if (x < -kMaxCoord || x > kMaxCoord || y < -kMaxCoord || y > kMaxCoord) { err.set("polygon vertex outside +-2^24"); return false; }
+        if constexpr (C::kDecoding) { pts[i].x = int32_t(x); pts[i].y = int32_t(y); }
+    }
+    if (lattice_more) { err.set("polygon shift is not the largest"); return false; }
+    return true;
+}
+
+// A polygon's outline after its first vertex (SPEC.md 7.4, polygon 5): the lattice shift, the
+// prediction mode, then the vertices. Modes 0 and 1 code the differences between consecutive
+// vertices predicted as zero or as the previous difference; mode 2 is the conic prediction.
+template <class C>
+SPT_CODER_INLINE bool code_polygon_outline(C& c, PolygonModels& pm, const PolygonPlan& plan,
+                                           std::vector<PolygonVertex>& pts, SyntaxError& err) {
+    const uint32_t shift = code_tree(c, pm.shift, 3, plan.shift);
+    if (shift > 4) { err.set("polygon shift " + std::to_string(shift) + " is reserved"); return false; }
+    if (c.bit(pm.conic, plan.mode == 2 ? 1 : 0)) return code_conic_outline(c, pm, plan, shift, pts, err);
+    const int mode = c.bit(pm.second, plan.mode == 1 ? 1 : 0);
+    bool lattice_more = shift < 4;
+    int64_t px = 0, py = 0;  // previous difference, in units of 2^shift
+    for (size_t i = 1; i < pts.size(); ++i) {
+        const auto& a = pts[i - 1];
+        const int64_t ex = C::kDecoding ? 0 : (int64_t(pts[i].x) - a.x) >> shift;
+        const int64_t ey = C::kDecoding ? 0 : (int64_t(pts[i].y) - a.y) >> shift;
+        const int64_t qx = mode ? px : 0, qy = mode ? py : 0;
+        const int64_t vx = qx + code_sint(c, pm.dx[mode], ex - qx);
+        const int64_t vy = qy + code_sint(c, pm.dy[mode], ey - qy);
+        if ((vx | vy) & 1) lattice_more = false;
+        const int64_t x = a.x + vx * (int64_t(1) << shift), y = a.y + vy * (int64_t(1) << shift);
+        if (x < -kMaxCoord || x > kMaxCoord || y < -kMaxCoord || y > kMaxCoord) { err.set("polygon vertex outside +-2^24"); return false; }
+        if constexpr (C::kDecoding) { pts[i].x = int32_t(x); pts[i].y = int32_t(y); }
+        px = vx; py = vy;
+    }
+    if (lattice_more) { err.set("polygon shift is not the largest"); return false; }
+    return true;
+}
+
+// The encoder's choice of lattice shift and prediction mode for a polygon (polygon_predict.cpp):
+// the mode, and for the conic mode its matrix, that code the outline in the fewest bits given
+// the contexts' current state.
+PolygonPlan plan_polygon(const PolygonModels& pm, const std::vector<PolygonVertex>& pts);
+
+// Polygon stroke geometry (SPEC.md 7.4, polygon 5): vertex count, supersampling, first vertex,
+// then the outline.
 template <class C>
 SPT_CODER_INLINE bool code_polygon(C& c, StrokeCoderState& st, PolygonStroke& pg, const Limits& lim, SyntaxError& err) {
     const StreamShape& sh = st.shape;
+    PolygonModels& pm = st.poly;
     c.set_field(Field::Geometry);
-    const uint64_t n = code_uint(c, st.poly_points, pg.points.size() >= 3 ? pg.points.size() - 3 : 0) + 3;
+    const uint64_t n = code_uint(c, pm.points, pg.points.size() >= 3 ? pg.points.size() - 3 : 0) + 3;
     if (n > lim.max_polygon_vertices) { err.set("polygon of " + std::to_string(n) + " vertices exceeds the limit"); return false; }
-    uint32_t aa = st.prev_poly_aa;
-    if (c.bit(st.poly_same_aa, pg.supersample != st.prev_poly_aa ? 1 : 0)) {
-        aa = code_tree(c, st.poly_aa, pg.supersample);
-        if (aa == st.prev_poly_aa || aa == 1 || aa > 16) { err.set("polygon supersampling " + std::to_string(aa) + " is invalid"); return false; }
+    uint32_t aa = pm.prev_aa;
+    if (c.bit(pm.same_aa, pg.supersample != pm.prev_aa ? 1 : 0)) {
+        aa = code_tree(c, pm.aa, 5, pg.supersample);
+        if (aa == pm.prev_aa || aa == 1 || aa > 16) { err.set("polygon supersampling " + std::to_string(aa) + " is invalid"); return false; }
     }
     pg.supersample = uint8_t(aa);
-    st.prev_poly_aa = aa;
+    pm.prev_aa = aa;
     pg.points.resize(size_t(n));  // the encoder's size already; the decoder's new
     auto& p0 = pg.points[0];
     c.set_field(Field::Position);
@@ -226,47 +324,9 @@ SPT_CODER_INLINE bool code_polygon(C& c, StrokeCoderState& st, PolygonStroke& pg
     p0.y = int32_t(code_position(c, st.pos[3][1], p0.y, sh.height, err));
     if (err.bad) return false;
     c.set_field(Field::Geometry);
-    // Encoder: the largest shift that divides every difference, and the cheaper prediction.
-    uint32_t shift = 4;
-    int mode = 0;
-    if constexpr (!C::kDecoding) {
-        for (size_t i = 1; i < pg.points.size(); ++i) {
-            const int64_t dx = int64_t(pg.points[i].x) - pg.points[i - 1].x, dy = int64_t(pg.points[i].y) - pg.points[i - 1].y;
-            while (shift > 0 && ((dx | dy) & ((int64_t(1) << shift) - 1)) != 0) --shift;
-        }
-        uint64_t cost[2] = {0, 0};
-        int64_t px = 0, py = 0;
-        for (size_t i = 1; i < pg.points.size(); ++i) {
-            const int64_t ex = (int64_t(pg.points[i].x) - pg.points[i - 1].x) >> shift;
-            const int64_t ey = (int64_t(pg.points[i].y) - pg.points[i - 1].y) >> shift;
-            cost[0] += uint64_t(bit_length(uint64_t(ex < 0 ? -ex : ex))) + uint64_t(bit_length(uint64_t(ey < 0 ? -ey : ey)));
-            const int64_t rx = ex - px, ry = ey - py;
-            cost[1] += uint64_t(bit_length(uint64_t(rx < 0 ? -rx : rx))) + uint64_t(bit_length(uint64_t(ry < 0 ? -ry : ry)));
-            px = ex; py = ey;
-        }
-        mode = cost[1] < cost[0] ? 1 : 0;
-    }
-    shift = code_tree(c, st.poly_shift, shift);
-    if (shift > 4) { err.set("polygon shift " + std::to_string(shift) + " is reserved"); return false; }
-    mode = c.bit(st.poly_second, mode);
-    bool could_shift_more = shift < 4;
-    int64_t px = 0, py = 0;  // previous difference, in units of 2^shift
-    for (size_t i = 1; i < pg.points.size(); ++i) {
-        const auto& a = pg.points[i - 1];
-        auto& b = pg.points[i];
-        const int64_t ex = C::kDecoding ? 0 : (int64_t(b.x) - a.x) >> shift;
-        const int64_t ey = C::kDecoding ? 0 : (int64_t(b.y) - a.y) >> shift;
-        const int64_t qx = mode ? px : 0, qy = mode ? py : 0;
-        const int64_t vx = qx + code_sint(c, st.poly_dx[mode], ex - qx);
-        const int64_t vy = qy + code_sint(c, st.poly_dy[mode], ey - qy);
-        if ((vx | vy) & 1) could_shift_more = false;
-        const int64_t x = a.x + vx * (int64_t(1) << shift), y = a.y + vy * (int64_t(1) << shift);
-        if (x < -kMaxCoord || x > kMaxCoord || y < -kMaxCoord || y > kMaxCoord) { err.set("polygon vertex outside +-2^24"); return false; }
-        b.x = int32_t(x); b.y = int32_t(y);
-        px = vx; py = vy;
-    }
-    if (could_shift_more) { err.set("polygon shift is not the largest"); return false; }
-    return true;
+    PolygonPlan plan;
+    if constexpr (!C::kDecoding) plan = plan_polygon(pm, pg.points);
+    return code_polygon_outline(c, pm, plan, pg.points, err);
 }
 
 // One stroke (SPEC.md 7.4.2). Returns false and fills `err` on an invalid coded value.

@@ -2,6 +2,7 @@
 // Not run by the tests (they only decode the committed files): run it by hand after a
 // deliberate format change, and review the diff.
 //   make_golden [output_dir]
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -281,6 +282,40 @@ std::vector<Case> cases() {
         tri.points = {{16 * 30, 16 * 30}, {16 * 47, 16 * 39}, {16 * 30, 16 * 39}};
         i.added.push_back(Stroke::make_polygon(tri));
         c.stream.frames = {k, i};
+        v.push_back(c);
+    }
+    {   // Format 1.2: polygons that the conic prediction codes (SPEC.md 7.4 polygon 5, mode 2).
+        Case c{"polygons_conic", "format 1.2 polygons near affine images of regular polygons (conic prediction): three "
+                                 "geometrize-like rotated-ellipse 20-gons on truncated whole pixels (one rotation, coded "
+                                 "once), a clockwise 32-gon ellipse at 1/16 px, a half-pixel 12-gon circle, a 20-gon "
+                                 "off the canvas", {}};
+        c.stream.info.header = header(64, 48, 1, 1);
+        c.stream.info.templates = {ellipse()};
+        Frame k;
+        // (centre x, centre y, rx, ry, angle in degrees, vertex count, Q4 step, clockwise)
+        struct Ring { double cx, cy, rx, ry, deg; int n, step; bool cw; Rgba8 col; };
+        const Ring rings[] = {{20, 15, 11, 6, 30, 20, 16, false, {200, 60, 30, 255}},
+                              {40, 30, 7, 13, 105, 20, 16, false, {30, 160, 60, 128}},
+                              {12, 36, 5, 4, 0, 20, 16, false, {250, 240, 10, 255}},
+                              {44, 14, 14.3, 6.7, -20, 32, 1, true, {10, 20, 220, 200}},
+                              {30, 24, 9.5, 9.5, 0, 12, 8, false, {120, 0, 120, 90}},
+                              {-6, 50, 12, 8, 60, 20, 16, false, {0, 0, 0, 255}}};
+        for (const Ring& r : rings) {
+            PolygonStroke pg;
+            pg.color = r.col;
+            const double co = std::cos(r.deg * M_PI / 180), si = std::sin(r.deg * M_PI / 180);
+            for (int i = 0; i < r.n; ++i) {
+                const double a = (r.cw ? -2 : 2) * M_PI * i / r.n;
+                const double ex = r.rx * std::cos(a), ey = r.ry * std::sin(a);
+                const double x = 16 * (r.cx + ex * co - ey * si), y = 16 * (r.cy + ex * si + ey * co);
+                // Truncated to the step (geometrize truncates to whole pixels), then on the
+                // lattice through the first vertex: multiples of the step plus 8 for pixels.
+                const int32_t off = r.step == 16 ? 8 : 0;
+                pg.points.push_back({int32_t(std::floor(x / r.step)) * r.step + off, int32_t(std::floor(y / r.step)) * r.step + off});
+            }
+            k.added.push_back(Stroke::make_polygon(pg));
+        }
+        c.stream.frames = {k};
         v.push_back(c);
     }
     return v;

@@ -40,15 +40,18 @@ for f in sorted(golden.glob("*.spt")):
         if t == "HEAD":
             w, h = struct.unpack_from("<II", p, 8)
             sets, orients = p[32], p[33]
-            head = (sets, orients, w, h)
+            minor = struct.unpack_from("<H", p, 2)[0]
+            head = (sets, orients, w, h, minor)
         elif t == "TMPL":
             ntmpl += 1
             put("template", f"{f.stem}-{ntmpl}", p)
         elif t == "FRAM" and p[5] == 1 and head:
-            sets, orients, w, h = head
+            sets, orients, w, h, minor = head
             body = p[8:]
             if p[4] == 0:
-                prefix = bytes([sets - 1, orients - 1, ntmpl]) + struct.pack("<HH", w - 1, h - 1)
+                # Bit 7 of the first byte: a format 1.2 stream (polygon strokes, SPEC.md 7.4).
+                first = (sets - 1) | (0x80 if minor >= 2 else 0)
+                prefix = bytes([first, orients - 1, ntmpl]) + struct.pack("<HH", w - 1, h - 1)
                 put("strokes", f"{f.stem}-{i}", prefix + body)
             else:
                 removed, q = varint(body, 0)
