@@ -206,6 +206,9 @@ TEST(ImportGeometrize, RotatedEllipsesAreAlmostExactPolygons) {
     ASSERT_GE(s.size(), 2u);
     EXPECT_EQ(s[0].kind, StrokeKind::Polygon);
     EXPECT_EQ(s[1].kind, StrokeKind::Polygon);
+    // One vertex per geometrize vertex (no connectors), so the n-gon codes by conic prediction.
+    EXPECT_EQ(s[0].polygon.points.size(), 20u);
+    EXPECT_LE(s[1].polygon.points.size(), 20u);
     std::vector<uint8_t> want(60 * 50, 0);
     for (const auto& sh : {std::vector<double>{28, 24, 22, 9, 37}, std::vector<double>{40, 12, 6, 13, 200}})
         for (const auto& sp : import::geometrize::spans(16, sh, 60, 50))
