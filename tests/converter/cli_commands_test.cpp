@@ -74,6 +74,22 @@ TEST(CliInfo, TextAndJsonFields) {
     EXPECT_EQ(j["frame_list"][1]["removed"].num, 10);
     EXPECT_EQ(j["frame_list"][1]["live"].num, 40);
     EXPECT_EQ(j["strokes"]["max_live"].num, 40);
+    // Added strokes by kind, against the library's own decode.
+    double kinds[4] = {0, 0, 0, 0};
+    auto rd = spt::Reader::open(f);
+    ASSERT_TRUE(rd.ok());
+    for (size_t i = 0; i < (*rd)->frames().size(); ++i) {
+        auto fr = (*rd)->read_frame(i);
+        ASSERT_TRUE(fr.ok());
+        for (const auto& st : fr->added) kinds[size_t(st.kind)] += 1;
+    }
+    const auto& k = j["strokes"]["kinds"];
+    EXPECT_EQ(k["stamp"].num, kinds[0]);
+    EXPECT_EQ(k["affine"].num, kinds[1]);
+    EXPECT_EQ(k["curve"].num, kinds[2]);
+    EXPECT_EQ(k["polygon"].num, kinds[3]);
+    EXPECT_EQ(kinds[0] + kinds[1] + kinds[2] + kinds[3], j["strokes"]["added"].num);
+    EXPECT_GT(kinds[0], 0);
 }
 
 TEST(CliVerify, GoodFilePassesFlippedBitFails) {

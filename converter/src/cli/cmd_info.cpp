@@ -58,7 +58,7 @@ int cmd_info(int argc, char** argv) {
         .flag("json", "print one JSON document on stdout (keys below)")
         .flag("frames", "list every frame: type, coding, offset, bytes, strokes added/removed/live "
                         "(decodes the whole file)")
-        .flag("no-fields", "skip the per-field byte breakdown (it decodes every frame)")
+        .flag("no-fields", "skip the per-field byte breakdown and the stroke kinds (they decode every frame)")
         .epilog(
             "Sections: header = everything before the first frame (signature, HEAD, templates, "
             "metadata); strokes / motion = frame payload coding added strokes / removals and "
@@ -70,7 +70,8 @@ int cmd_info(int argc, char** argv) {
             "unknown), frames_found, duration_seconds, color, background [r, g, b], sets "
             "[{width, height}], orientations [{cos_q14, sin_q14, degrees}], templates [{kind, "
             "name, width, height}], metadata {key: value}, rois [{first_frame, last_frame, x, y, "
-            "w, h}], key_frames [index...], strokes {added, removed, max_live (with --frames)}, "
+            "w, h}], key_frames [index...], strokes {added, removed, kinds {stamp, affine, curve, "
+            "polygon} (added strokes by kind; absent with --no-fields), max_live (with --frames)}, "
             "bytes {total, header, frames, strokes, motion, framing, tail}, fields {name: "
             "bytes} (absent with --no-fields), warnings [text], and with --frames: frame_list "
             "[{index, type, coding, offset, bytes, stroke_bytes, motion_bytes, added, removed, "
@@ -112,14 +113,18 @@ int cmd_info(int argc, char** argv) {
         }
     }
     FieldStats fs;
+    uint64_t kinds[4] = {0, 0, 0, 0};  // added strokes by StrokeKind
+    static const char* const kKindNames[4] = {"stamp", "affine", "curve", "polygon"};
     if (fields) {
         for (size_t i = 0; i < frames.size(); ++i) {
             auto s = r.field_stats(i);
-            if (!s) {
-                std::fprintf(stderr, "spt info: %s\n", io::frame_error(r, i, path, s.error()).c_str());
+            auto f = s ? r.read_frame(i) : Result<Frame>(s.error());
+            if (!f) {
+                std::fprintf(stderr, "spt info: %s\n", io::frame_error(r, i, path, f.error()).c_str());
                 return 1;
             }
             fs.add(*s);
+            for (const Stroke& st : f->added) ++kinds[size_t(st.kind) & 3];
         }
     }
     const double fps = h.fps.den ? double(h.fps.num) / h.fps.den : 0.0;
@@ -158,6 +163,11 @@ int cmd_info(int argc, char** argv) {
         j.end().key("key_frames").arr();
         for (auto k : keys) j.uinteger(k);
         j.end().key("strokes").obj().kv("added", added).kv("removed", removed);
+        if (fields) {
+            j.key("kinds").obj();
+            for (size_t k = 0; k < 4; ++k) j.kv(kKindNames[k], kinds[k]);
+            j.end();
+        }
         if (list) j.kv("max_live", max_live);
         j.end();
         j.key("bytes").obj().kv("total", sec.total).kv("header", sec.header).kv("frames", sec.frames)
@@ -206,7 +216,14 @@ int cmd_info(int argc, char** argv) {
         if (!t.name.empty()) std::printf(" \"%s\"", t.name.c_str());
         std::printf(";");
     }
-    std::printf("\nstrokes     %llu added, %llu removed", (unsigned long long)added, (unsigned long long)removed);
+    std::printf("\nstrokes     %llu added", (unsigned long long)added);
+    if (fields && added) {
+        const char* sep = " (";
+        for (size_t k = 0; k < 4; ++k)
+            if (kinds[k]) std::printf("%s%llu %s", sep, (unsigned long long)kinds[k], kKindNames[k]), sep = ", ";
+        std::printf(")");
+    }
+    std::printf(", %llu removed", (unsigned long long)removed);
     if (list) std::printf(", at most %llu live", (unsigned long long)max_live);
     std::printf("\n");
     for (const auto& [k, v] : info.metadata) std::printf("meta        %s = %s\n", k.c_str(), v.c_str());
