@@ -1,9 +1,11 @@
 // Value rules of SPEC.md 3.1, 3.2, 4 and 5.
 #include "validate.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "byte_io.hpp"
+#include "spt/render.hpp"
 
 namespace spt::detail {
 namespace {
@@ -102,6 +104,11 @@ Status check_stroke(const Stroke& s, const StreamShape& sh, const Limits& lim, C
             for (size_t i = 0; i < p.points.size(); ++i)
                 if (!coord_ok(p.points[i].x) || !coord_ok(p.points[i].y))
                     return fail(code, where, "polygon vertex " + std::to_string(i) + " is outside +-2^24", off);
+            if (const uint64_t w = polygon_render_work(p, sh.height); w > lim.max_polygon_work)
+                return fail(Code::LimitExceeded, where,
+                            "polygon needs " + std::to_string(w) + " units of rendering work (edges x rows x samples), above the limit " +
+                                std::to_string(lim.max_polygon_work),
+                            off);
             return {};
         }
     }
@@ -142,3 +149,28 @@ Status check_frame(const Frame& f, const StreamShape& sh, const Limits& lim, uin
 }
 
 }  // namespace spt::detail
+
+namespace spt {
+
+namespace {
+// floor(v / 16): the pixel of a Q4 coordinate (arithmetic shift).
+int64_t floor16(int64_t v) { return v >= 0 ? v / 16 : -((-v + 15) / 16); }
+}  // namespace
+
+uint64_t polygon_render_work(const PolygonStroke& p, uint32_t canvas_height) {
+    if (p.points.empty() || canvas_height == 0) return 0;
+    uint64_t edges = 0;
+    int64_t lo = p.points[0].y, hi = lo;
+    for (size_t i = 0; i < p.points.size(); ++i) {
+        edges += p.points[i].y != p.points[(i + 1) % p.points.size()].y;
+        lo = std::min<int64_t>(lo, p.points[i].y);
+        hi = std::max<int64_t>(hi, p.points[i].y);
+    }
+    // Canvas rows of the box (SPEC 8.8: floor_div(min y, 16) .. floor_div(max y, 16)).
+    const int64_t r0 = std::max<int64_t>(floor16(lo), 0), r1 = std::min<int64_t>(floor16(hi), int64_t(canvas_height) - 1);
+    if (r1 < r0) return 0;
+    const uint64_t m = p.supersample >= 2 ? p.supersample : 1;
+    return edges * uint64_t(r1 - r0 + 1) * m * m;
+}
+
+}  // namespace spt

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "spt/reader.hpp"
+#include "spt/render.hpp"
 
 namespace spt::import {
 
@@ -110,6 +111,9 @@ Status check_stroke(const Stroke& s, const Header& h, size_t templates, const Li
             if (s.polygon.supersample == 1 || s.polygon.supersample > 16) return Error(bad(where, "polygon supersampling is not 0 or 2..16"));
             for (const auto& p : s.polygon.points)
                 if (!pos_ok(p.x) || !pos_ok(p.y)) return Error(bad(where, "polygon vertex out of range"));
+            if (polygon_render_work(s.polygon, h.height) > lim.max_polygon_work)
+                return Error(make_error(Code::LimitExceeded, where + ": polygon needs more rendering work (edges x rows x samples) than the limit " +
+                                                                 std::to_string(lim.max_polygon_work)));
             break;
     }
     return {};

@@ -3,6 +3,7 @@
 #include "spt_import/geometrize.hpp"
 
 #include "spt_import/shapes.hpp"
+#include "spt/render.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -444,10 +445,19 @@ bool append_polygon(const Renderer& r, const std::vector<Pix>& vertices, const s
     // a few more pixels (rotated ellipses: 113 instead of 290 differing pixels, 48.3 instead of
     // 46.2 dB) at nearly twice the bytes; it is the fallback when the compact one degenerates.
     pg.points = offset_polygon(vertices);
-    if (pg.points.size() >= 3) miss = refine(f, pg, f(Stroke::make_polygon(pg)), {8, -8, 16, -16});
+    // Fitting renders the polygon many times: only shapes of geometrize's own size are
+    // refined, and one that a reader would refuse to render (Limits::max_polygon_work) is
+    // not rendered at all.
+    if (polygon_render_work(pg, h) > Limits{}.max_polygon_work) {
+        ++rep.dropped;
+        rep.note("polygons needing more rendering work than spt::Limits allows dropped");
+        return true;
+    }
+    if (pg.points.size() >= 3)
+        miss = pg.points.size() <= 64 ? refine(f, pg, f(Stroke::make_polygon(pg)), {8, -8, 16, -16}) : f(Stroke::make_polygon(pg));
     if (miss == ~uint64_t(0)) {
         pg.points = lattice_polygon(vertices);
-        if (pg.points.size() >= 3) miss = refine(f, pg, f(Stroke::make_polygon(pg)));
+        if (pg.points.size() >= 3) miss = pg.points.size() <= 64 ? refine(f, pg, f(Stroke::make_polygon(pg))) : f(Stroke::make_polygon(pg));
     }
     if (miss == ~uint64_t(0)) return false;
     pg.color = colour;

@@ -122,6 +122,42 @@ TEST(CliVerify, GoodFilePassesFlippedBitFails) {
     EXPECT_EQ(run_spt(d, {"verify", cut}).code, 1);
 }
 
+// A 2 KB file whose one polygon has 1024 edges crossing every one of 2048 rows at 16x16
+// samples would keep a renderer busy for half a minute (and its big brothers for hours): verify
+// and render refuse it at once by the rendering-work limit (SPEC.md 10), naming the stroke.
+TEST(CliVerify, PolygonRenderingBombIsRefused) {
+    SKIP_WITHOUT_TOOL();
+    TempDir d;
+    const std::string f = d.file("star.spt");
+    spt::StreamInfo info;
+    spt::Header& h = info.header;
+    h.width = h.height = 2048;
+    h.sets = {spt::StrokeSet{16, 16}};
+    h.orientations = spt::default_orientations(1);
+    info.templates.resize(1);
+    info.templates[0].kind = spt::TemplateKind::Ellipse;
+    spt::PolygonStroke p;
+    p.color = {255, 0, 0, 255};
+    p.supersample = 16;
+    for (int i = 0; i < 1024; ++i) p.points.push_back({int32_t(i * 32), (i % 2) ? 2048 * 16 - 1 : 0});
+    spt::Frame fr;
+    fr.added = {spt::Stroke::make_polygon(p)};
+    auto w = spt::Writer::create(f, info);
+    ASSERT_TRUE(w.ok()) << w.error().message;
+    ASSERT_TRUE((*w)->append(fr).ok());
+    ASSERT_TRUE((*w)->finish().ok());
+    EXPECT_LT(fs::file_size(f), 8000u);
+    for (const char* cmd : {"verify", "render"}) {
+        std::vector<std::string> a = {cmd, f};
+        if (std::string(cmd) == "render") a.insert(a.end(), {"-o", d.file("star.png")});
+        auto r = run_spt(d, a);
+        EXPECT_EQ(r.code, 1) << cmd;
+        EXPECT_NE(r.err.find("rendering work"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("stroke 0"), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(d.file("star.png")));
+}
+
 TEST(CliRender, SingleFrameAndSequence) {
     SKIP_WITHOUT_TOOL();
     TempDir d;

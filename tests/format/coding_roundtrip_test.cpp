@@ -200,6 +200,51 @@ TEST(CodingRoundTrip, PolygonLimitsAndRanges) {
         EXPECT_NE(f.error().message.find("10 vertices"), std::string::npos) << f.error().message;
         std::remove(path.c_str());
     }
+    // Rendering work (SPEC 10): 10 non-horizontal edges x 10 rows x 1 sample = 100 units here.
+    EXPECT_EQ(polygon_render_work(p, 16), 100u);
+    PolygonStroke aa = p;
+    aa.supersample = 4;
+    EXPECT_EQ(polygon_render_work(aa, 16), 100u * 16);
+    EXPECT_EQ(polygon_render_work(p, 5), 10u * 5);  // rows clipped to the canvas
+    for (Coding coding : {Coding::Stored, Coding::Range}) {
+        const std::string path = temp_path("poly-work-" + std::to_string(int(coding)) + ".spt");
+        ASSERT_TRUE(write_stream(path, rs, coding).ok());
+        ReaderOptions ro;
+        ro.limits.max_polygon_work = 99;
+        auto r = Reader::open(path, ro);
+        ASSERT_TRUE(r.ok()) << r.error().message;
+        auto f = (*r)->read_frame(0);
+        ASSERT_FALSE(f.ok());
+        EXPECT_EQ(f.error().code, Code::LimitExceeded);
+        EXPECT_NE(f.error().message.find("rendering work"), std::string::npos) << f.error().message;
+        EXPECT_NE(f.error().message.find("frame 0"), std::string::npos) << f.error().message;
+        ro.limits.max_polygon_work = 100;
+        auto ok = Reader::open(path, ro);
+        ASSERT_TRUE(ok.ok());
+        EXPECT_TRUE((*ok)->strokes_at(0).ok());
+        std::remove(path.c_str());
+    }
+    // The live list's sum is bounded too: two frames of one polygon each, 100 units apiece.
+    {
+        RandomStream two = rs;
+        Frame inter;
+        inter.type = FrameType::Inter;
+        inter.index = 1;
+        inter.added = {Stroke::make_polygon(p)};
+        two.frames.push_back(inter);
+        const std::string path = temp_path("poly-live-work.spt");
+        ASSERT_TRUE(write_stream(path, two, Coding::Stored).ok());
+        ReaderOptions ro;
+        ro.limits.max_polygon_work = 199;
+        auto r = Reader::open(path, ro);
+        ASSERT_TRUE(r.ok());
+        EXPECT_TRUE((*r)->strokes_at(0).ok());
+        auto live = (*r)->strokes_at(1);
+        ASSERT_FALSE(live.ok());
+        EXPECT_EQ(live.error().code, Code::LimitExceeded);
+        EXPECT_NE(live.error().message.find("live list"), std::string::npos) << live.error().message;
+        std::remove(path.c_str());
+    }
     // A vertex outside +-2^24: the writer refuses it; a stored file carrying one is Corrupt.
     RandomStream bad = rs;
     bad.frames[0].added[0].polygon.points[3].x = (1 << 24) + 1;

@@ -16,6 +16,13 @@ struct Limits {
     uint32_t max_live_strokes = 1u << 24;      // strokes alive after applying a frame
     uint32_t max_curve_points = 1u << 16;      // points in one curve stroke
     uint32_t max_polygon_vertices = 1u << 16;  // vertices of one polygon stroke (format 1.2)
+    // Rendering work of the polygons of one frame's live list (and of each one decoded):
+    // non-horizontal edges x canvas rows of the box x samples per pixel, summed (SPEC.md 10,
+    // polygon_render_work in render.hpp). Bounds what a small hostile file can make a renderer
+    // do (every edge of a star polygon crosses every sample row): 2^28 is about ten seconds of
+    // one core for the reference renderer at worst, and far above paintings (a geometrize
+    // 20-gon needs a few thousand units; 30,000 of them a few 10^7).
+    uint64_t max_polygon_work = 1ull << 28;
     uint32_t max_metadata_bytes = 1u << 24;
     uint32_t max_frames = 0xFFFFFFFEu;
 };

@@ -35,6 +35,12 @@ inline uint8_t blend8(uint8_t dst, uint8_t src, uint32_t alpha) {
     return uint8_t((uint32_t(dst) * (255u - alpha) + uint32_t(src) * alpha + 127u) / 255u);
 }
 
+// The rendering work of a polygon stroke that Limits::max_polygon_work bounds (SPEC.md 10):
+// its non-horizontal edges x the canvas rows its box covers x its samples per pixel (N² for
+// an N x N grid, else 1). Readers reject a polygon above the limit; tools that make
+// polygons can check before they render one.
+uint64_t polygon_render_work(const PolygonStroke& p, uint32_t canvas_height);
+
 class Renderer {
 public:
     // Validates the header and templates; caches stamp footprints lazily.
