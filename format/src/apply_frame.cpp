@@ -30,20 +30,27 @@ struct Mover {
     }
 };
 
-// Every frame renders its whole live list: the polygons in it may together need at most
-// Limits::max_polygon_work (SPEC.md 10), or a small file of a few edges that cross every row
-// could keep a renderer busy for hours.
-Status check_polygon_work(const std::vector<Stroke>& live, const Header& header, const Limits& limits,
-                          const std::string& where) {
-    uint64_t work = 0;
-    for (const Stroke& s : live)
+// Every frame renders its whole live list: its polygons and its curves may together need at
+// most Limits::max_polygon_work and max_curve_work (SPEC.md 10), or a small file of a few
+// edges or segments that cross the whole canvas could keep a renderer busy for hours.
+Status check_render_work(const std::vector<Stroke>& live, const Header& header, const Limits& limits,
+                         const std::string& where) {
+    uint64_t polygons = 0, curves = 0;
+    for (const Stroke& s : live) {
         if (s.kind == StrokeKind::Polygon) {
-            work += polygon_render_work(s.polygon, header.height);
-            if (work > limits.max_polygon_work)
+            polygons += polygon_render_work(s.polygon, header.height);
+            if (polygons > limits.max_polygon_work)
                 return make_error(Code::LimitExceeded, where + ": the polygons of the live list need more than " +
                                                            std::to_string(limits.max_polygon_work) +
                                                            " units of rendering work (edges x rows x samples), the limit");
+        } else if (s.kind == StrokeKind::Curve) {
+            curves += curve_render_work(s.curve, header.width, header.height);
+            if (curves > limits.max_curve_work)
+                return make_error(Code::LimitExceeded, where + ": the curves of the live list need more than " +
+                                                           std::to_string(limits.max_curve_work) +
+                                                           " units of rendering work (pixels of their segments' boxes), the limit");
         }
+    }
     return {};
 }
 
@@ -54,7 +61,7 @@ Status apply_frame(std::vector<Stroke>& live, const Frame& frame, const Header& 
     if (frame.type == FrameType::Key) {
         if (frame.added.size() > limits.max_live_strokes)
             return make_error(Code::LimitExceeded, where + ": live list exceeds the limit");
-        if (Status s = check_polygon_work(frame.added, header, limits, where); !s) return s;
+        if (Status s = check_render_work(frame.added, header, limits, where); !s) return s;
         live = frame.added;
         return {};
     }
@@ -114,7 +121,7 @@ Status apply_frame(std::vector<Stroke>& live, const Frame& frame, const Header& 
         next.push_back(std::move(s));
     }
     next.insert(next.end(), frame.added.begin(), frame.added.end());
-    if (Status s = check_polygon_work(next, header, limits, where); !s) return s;
+    if (Status s = check_render_work(next, header, limits, where); !s) return s;
     live = std::move(next);
     return {};
 }

@@ -22,7 +22,7 @@ void encode_strokes(const std::vector<Stroke>& strokes, const StreamShape& shape
     Limits unlimited;
     unlimited.max_curve_points = 0xFFFFFFFFu;
     unlimited.max_polygon_vertices = 0xFFFFFFFFu;
-    unlimited.max_polygon_work = ~uint64_t(0);
+    unlimited.max_polygon_work = unlimited.max_curve_work = ~uint64_t(0);
     SyntaxError err;
     for (const Stroke& s : strokes) {
         Stroke copy = s;  // code_stroke assigns coded values back

@@ -92,6 +92,11 @@ Status check_stroke(const Stroke& s, const StreamShape& sh, const Limits& lim, C
                 if (!coord_ok(p.x) || !coord_ok(p.y)) return fail(code, where, "curve point is outside +-2^24", off);
                 if (p.width > kMaxWidthQ4) return fail(code, where, "curve width is above 2^16", off);
             }
+            if (const uint64_t w = curve_render_work(c, sh.width, sh.height); w > lim.max_curve_work)
+                return fail(Code::LimitExceeded, where,
+                            "curve needs " + std::to_string(w) + " units of rendering work (pixels of its segments' boxes), above the limit " +
+                                std::to_string(lim.max_curve_work),
+                            off);
             return {};
         }
         case StrokeKind::Polygon: {
@@ -156,6 +161,24 @@ namespace {
 // floor(v / 16): the pixel of a Q4 coordinate (arithmetic shift).
 int64_t floor16(int64_t v) { return v >= 0 ? v / 16 : -((-v + 15) / 16); }
 }  // namespace
+
+uint64_t curve_render_work(const CurveStroke& c, uint32_t canvas_width, uint32_t canvas_height) {
+    const size_t n = c.points.size();
+    uint64_t work = 0;
+    for (size_t k = 0; k < n; ++k) {
+        if (k + 1 == n && n > 1) break;  // n - 1 segments; a one-point curve is one disc
+        const CurvePoint& p = c.points[k];
+        const CurvePoint& q = c.points[k + 1 < n ? k + 1 : k];
+        // The segment's box of SPEC 8.5 (as raster_curve.cpp evaluates it), clipped to the canvas.
+        const int64_t m = (std::max<int64_t>(p.width, q.width) + 1) / 2 + 1;
+        const int64_t x0 = std::max<int64_t>(-floor16(-(std::min<int64_t>(p.x, q.x) - m - 8)), 0);
+        const int64_t x1 = std::min<int64_t>(floor16(std::max<int64_t>(p.x, q.x) + m - 8), int64_t(canvas_width) - 1);
+        const int64_t y0 = std::max<int64_t>(-floor16(-(std::min<int64_t>(p.y, q.y) - m - 8)), 0);
+        const int64_t y1 = std::min<int64_t>(floor16(std::max<int64_t>(p.y, q.y) + m - 8), int64_t(canvas_height) - 1);
+        if (x1 >= x0 && y1 >= y0) work += uint64_t(x1 - x0 + 1) * uint64_t(y1 - y0 + 1);
+    }
+    return work;
+}
 
 uint64_t polygon_render_work(const PolygonStroke& p, uint32_t canvas_height) {
     if (p.points.empty() || canvas_height == 0) return 0;

@@ -82,7 +82,7 @@ public:
         Limits lim;
         lim.max_curve_points = 0xFFFFFFFFu;  // writers follow the format, not a reader's limits
         lim.max_polygon_vertices = 0xFFFFFFFFu;
-        lim.max_polygon_work = ~uint64_t(0);
+        lim.max_polygon_work = lim.max_curve_work = ~uint64_t(0);
         lim.max_strokes_per_frame = lim.max_live_strokes = 0xFFFFFFFFu;
         if (auto st = detail::check_frame(frame, shape_, lim, live_, Code::InvalidArgument, where, pos_); !st) return st;
         if (auto st = polygon_version(frame, where); !st) return st;

@@ -104,6 +104,9 @@ Status check_stroke(const Stroke& s, const Header& h, size_t templates, const Li
             if (s.curve.points.size() > lim.max_curve_points) return Error(bad(where, "curve has more points than the limit"));
             for (const auto& p : s.curve.points)
                 if (!pos_ok(p.x) || !pos_ok(p.y) || p.width > uint32_t(kAxis)) return Error(bad(where, "curve point out of range"));
+            if (curve_render_work(s.curve, h.width, h.height) > lim.max_curve_work)
+                return Error(make_error(Code::LimitExceeded, where + ": curve needs more rendering work (pixels of its segments' boxes) than the limit " +
+                                                                 std::to_string(lim.max_curve_work)));
             break;
         case StrokeKind::Polygon:
             if (s.polygon.points.size() < 3) return Error(bad(where, "polygon with fewer than 3 vertices"));

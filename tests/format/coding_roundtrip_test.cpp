@@ -175,6 +175,45 @@ TEST(CodingRoundTrip, FieldStatsSumToBodySize) {
 
 // Polygon limits: a vertex count above the reader's limit and out-of-range vertices are rejected
 // before anything is allocated or drawn, with errors that name the frame and the byte offset.
+// Curves: the work a reader bounds (SPEC 10) is the canvas pixels of each segment's box.
+TEST(CodingRoundTrip, CurveRenderingWorkIsBounded) {
+    CurveStroke c;
+    c.color = {1, 2, 3, 255};
+    // One segment from pixel centre (2, 3) to (9, 3), 2 px wide: the box reaches 1 px + 1 Q4
+    // unit around it, so columns 1..10 and rows 2..4 (SPEC 8.5): 10 x 3 pixels.
+    c.points = {{2 * 16 + 8, 3 * 16 + 8, 32}, {9 * 16 + 8, 3 * 16 + 8, 32}};
+    EXPECT_EQ(curve_render_work(c, 64, 64), 30u);
+    EXPECT_EQ(curve_render_work(c, 6, 64), 15u);  // clipped to the canvas: columns 1..5
+    CurveStroke dot = c;
+    dot.points.resize(1);  // a one-point curve is one disc: columns 1..3, rows 2..4
+    EXPECT_EQ(curve_render_work(dot, 64, 64), 9u);
+
+    RandomStream rs;
+    rs.info.header.width = 64; rs.info.header.height = 64;
+    rs.info.header.sets = {{4, 4}};
+    rs.info.header.orientations = default_orientations(1);
+    Frame k;
+    k.added = {Stroke::make_curve(c), Stroke::make_curve(c)};
+    rs.frames = {k};
+    for (Coding coding : {Coding::Stored, Coding::Range}) {
+        const std::string path = temp_path("curve-work-" + std::to_string(int(coding)) + ".spt");
+        ASSERT_TRUE(write_stream(path, rs, coding).ok());
+        for (uint64_t limit : {uint64_t(29), uint64_t(59), uint64_t(60)}) {
+            ReaderOptions ro;
+            ro.limits.max_curve_work = limit;
+            auto r = Reader::open(path, ro);
+            ASSERT_TRUE(r.ok());
+            auto live = (*r)->strokes_at(0);
+            EXPECT_EQ(live.ok(), limit == 60) << limit;  // each curve 30, the live list 60
+            if (!live.ok()) {
+                EXPECT_EQ(live.error().code, Code::LimitExceeded);
+                EXPECT_NE(live.error().message.find("rendering work"), std::string::npos) << live.error().message;
+            }
+        }
+        std::remove(path.c_str());
+    }
+}
+
 TEST(CodingRoundTrip, PolygonLimitsAndRanges) {
     RandomStream rs;
     rs.info.header.width = 16; rs.info.header.height = 16;

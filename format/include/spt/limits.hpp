@@ -23,6 +23,10 @@ struct Limits {
     // one core for the reference renderer at worst, and far above paintings (a geometrize
     // 20-gon needs a few thousand units; 30,000 of them a few 10^7).
     uint64_t max_polygon_work = 1ull << 28;
+    // The same for curves: the canvas pixels of each segment's box, summed over the segments of
+    // the curves of one frame's live list (SPEC.md 10, curve_render_work in render.hpp). 2^33
+    // is about ten seconds of one core at worst; a hand-drawn stroke needs thousands.
+    uint64_t max_curve_work = 1ull << 33;
     uint32_t max_metadata_bytes = 1u << 24;
     uint32_t max_frames = 0xFFFFFFFEu;
 };

@@ -40,6 +40,9 @@ inline uint8_t blend8(uint8_t dst, uint8_t src, uint32_t alpha) {
 // an N x N grid, else 1). Readers reject a polygon above the limit; tools that make
 // polygons can check before they render one.
 uint64_t polygon_render_work(const PolygonStroke& p, uint32_t canvas_height);
+// The rendering work of a curve stroke that Limits::max_curve_work bounds (SPEC.md 10): the
+// canvas pixels of each segment's evaluation box (8.5), summed over its segments.
+uint64_t curve_render_work(const CurveStroke& c, uint32_t canvas_width, uint32_t canvas_height);
 
 class Renderer {
 public:
