@@ -30,13 +30,22 @@ struct Mover {
     }
 };
 
-// Every frame renders its whole live list: its polygons and its curves may together need at
-// most Limits::max_polygon_work and max_curve_work (SPEC.md 10), or a small file of a few
-// edges or segments that cross the whole canvas could keep a renderer busy for hours.
+// Every frame renders its whole live list: its polygons, curves, and stamps and affine strokes
+// may together need at most Limits::max_polygon_work, max_curve_work and max_fill_work (SPEC.md
+// 10), or a small file (a few edges or segments across the canvas, or millions of canvas-sized
+// strokes of a few bits each) could keep a renderer busy for hours.
 Status check_render_work(const std::vector<Stroke>& live, const Header& header, const Limits& limits,
-                         const std::string& where) {
-    uint64_t polygons = 0, curves = 0;
+                         const std::vector<Template>* templates, const std::string& where) {
+    uint64_t polygons = 0, curves = 0, fills = 0;
     for (const Stroke& s : live) {
+        if (templates && (s.kind == StrokeKind::Stamp || s.kind == StrokeKind::Affine)) {
+            fills += fill_render_work(s, header, *templates);
+            if (fills > limits.max_fill_work)
+                return make_error(Code::LimitExceeded, where + ": the stamps and affine strokes of the live list need more than " +
+                                                           std::to_string(limits.max_fill_work) +
+                                                           " units of rendering work (box pixels x samples), the limit");
+            continue;
+        }
         if (s.kind == StrokeKind::Polygon) {
             polygons += polygon_render_work(s.polygon, header.height);
             if (polygons > limits.max_polygon_work)
@@ -56,12 +65,13 @@ Status check_render_work(const std::vector<Stroke>& live, const Header& header, 
 
 }  // namespace
 
-Status apply_frame(std::vector<Stroke>& live, const Frame& frame, const Header& header, const Limits& limits) {
+Status apply_frame(std::vector<Stroke>& live, const Frame& frame, const Header& header, const Limits& limits,
+                   const std::vector<Template>* templates) {
     const std::string where = "frame " + std::to_string(frame.index);
     if (frame.type == FrameType::Key) {
         if (frame.added.size() > limits.max_live_strokes)
             return make_error(Code::LimitExceeded, where + ": live list exceeds the limit");
-        if (Status s = check_render_work(frame.added, header, limits, where); !s) return s;
+        if (Status s = check_render_work(frame.added, header, limits, templates, where); !s) return s;
         live = frame.added;
         return {};
     }
@@ -121,7 +131,7 @@ Status apply_frame(std::vector<Stroke>& live, const Frame& frame, const Header& 
         next.push_back(std::move(s));
     }
     next.insert(next.end(), frame.added.begin(), frame.added.end());
-    if (Status s = check_render_work(next, header, limits, where); !s) return s;
+    if (Status s = check_render_work(next, header, limits, templates, where); !s) return s;
     live = std::move(next);
     return {};
 }

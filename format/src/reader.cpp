@@ -406,7 +406,7 @@ Result<const std::vector<Stroke>*> ReaderImpl::strokes_at(size_t pos) {
     for (size_t i = start; i <= pos; ++i) {
         auto f = decode(i, nullptr);
         if (!f) { live_pos_ = SIZE_MAX; live_.clear(); return f.error(); }
-        if (auto st = apply_frame(live_, *f, info_.header, opts_.limits); !st) {
+        if (auto st = apply_frame(live_, *f, info_.header, opts_.limits, &info_.templates); !st) {
             live_pos_ = SIZE_MAX;
             live_.clear();
             const auto& e = frames_[i];

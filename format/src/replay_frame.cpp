@@ -87,6 +87,7 @@ Status start_canvas(const Frame& edits, FrameType type, const Header& hd, const 
     e.motion = edits.motion;
     Limits unlimited;
     unlimited.max_live_strokes = 0xFFFFFFFFu;
+    unlimited.max_polygon_work = unlimited.max_curve_work = ~uint64_t(0);  // the reader checked this live list
     SPT_TRY(apply_frame(moved, e, hd, unlimited));
     return renderer.render(canvas, moved);
 }

@@ -180,6 +180,39 @@ uint64_t curve_render_work(const CurveStroke& c, uint32_t canvas_width, uint32_t
     return work;
 }
 
+uint64_t fill_render_work(const Stroke& s, const Header& h, const std::vector<Template>& templates) {
+    int64_t cx, cy, rx, ry;  // centre pixel and half extents of the evaluation box, pixels
+    uint8_t tmpl;
+    if (s.kind == StrokeKind::Stamp) {
+        if (s.stamp.set >= h.sets.size() || s.stamp.orient >= h.orientations.size()) return 0;
+        const int64_t w = h.sets[s.stamp.set].width, hh = h.sets[s.stamp.set].height;
+        const int64_t C = std::abs(int64_t(h.orientations[s.stamp.orient].cos_q14));
+        const int64_t S = std::abs(int64_t(h.orientations[s.stamp.orient].sin_q14));
+        rx = (w * C + hh * S) / 32768 + 1;  // SPEC 8.3's box
+        ry = (w * S + hh * C) / 32768 + 1;
+        cx = floor16(s.stamp.x);
+        cy = floor16(s.stamp.y);
+        tmpl = s.stamp.tmpl;
+    } else if (s.kind == StrokeKind::Affine) {
+        const AffineStroke& a = s.affine;
+        // |u|, |v| <= 1 map within (|a| + |b|, |c| + |d|) of (tx, ty), Q4; a pixel more each way.
+        rx = (std::abs(int64_t(a.a)) + std::abs(int64_t(a.b))) / 16 + 2;
+        ry = (std::abs(int64_t(a.c)) + std::abs(int64_t(a.d))) / 16 + 2;
+        cx = floor16(a.tx);
+        cy = floor16(a.ty);
+        tmpl = a.tmpl;
+    } else {
+        return 0;
+    }
+    if (tmpl >= templates.size()) return 0;
+    const int64_t x0 = std::max<int64_t>(cx - rx, 0), x1 = std::min<int64_t>(cx + rx, int64_t(h.width) - 1);
+    const int64_t y0 = std::max<int64_t>(cy - ry, 0), y1 = std::min<int64_t>(cy + ry, int64_t(h.height) - 1);
+    if (x1 < x0 || y1 < y0) return 0;
+    const Template& t = templates[tmpl];
+    const uint64_t m = t.kind != TemplateKind::Bitmap && t.supersample >= 2 ? t.supersample : 1;
+    return uint64_t(x1 - x0 + 1) * uint64_t(y1 - y0 + 1) * m * m;
+}
+
 uint64_t polygon_render_work(const PolygonStroke& p, uint32_t canvas_height) {
     if (p.points.empty() || canvas_height == 0) return 0;
     uint64_t edges = 0;

@@ -111,6 +111,7 @@ public:
             // Coding 2 predicts from the canvas, so this writer keeps the live list.
             Limits unlimited;
             unlimited.max_live_strokes = 0xFFFFFFFFu;
+            unlimited.max_polygon_work = unlimited.max_curve_work = ~uint64_t(0);
             if (auto st = apply_frame(live_strokes_, frame, header_, unlimited); !st) return fail(st.error());
         }
         stats_.frame_bytes += chunk.size();

@@ -234,7 +234,7 @@ Result<std::vector<std::vector<Stroke>>> live_lists(const Document& doc) {
     std::vector<std::vector<Stroke>> out;
     std::vector<Stroke> live;
     for (const Frame& f : doc.frames) {
-        if (Status s = apply_frame(live, f, doc.info.header); !s) return s.error();
+        if (Status s = apply_frame(live, f, doc.info.header, {}, &doc.info.templates); !s) return s.error();
         out.push_back(live);
     }
     return out;

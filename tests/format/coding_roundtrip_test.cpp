@@ -175,6 +175,49 @@ TEST(CodingRoundTrip, FieldStatsSumToBodySize) {
 
 // Polygon limits: a vertex count above the reader's limit and out-of-range vertices are rejected
 // before anything is allocated or drawn, with errors that name the frame and the byte offset.
+// Stamps and affine strokes: box pixels x template samples per pixel (SPEC 10).
+TEST(CodingRoundTrip, FillRenderingWorkIsBounded) {
+    StreamInfo info;
+    info.header.width = 64; info.header.height = 48;
+    info.header.sets = {{8, 4}};
+    info.header.orientations = default_orientations(1);  // 0 degrees: cos 16384, sin 0
+    info.templates.resize(2);
+    info.templates[0].kind = TemplateKind::Ellipse;
+    info.templates[1].kind = TemplateKind::Ellipse;
+    info.templates[1].supersample = 4;
+    StampStroke st;
+    st.x = 10 * 16 + 8; st.y = 10 * 16 + 8; st.color = {1, 2, 3, 255};
+    // rx = 8 * 16384 / 32768 + 1 = 5, ry = 4 * 16384 / 32768 + 1 = 3: 11 x 7 pixels.
+    EXPECT_EQ(fill_render_work(Stroke::make_stamp(st), info.header, info.templates), 77u);
+    st.tmpl = 1;
+    EXPECT_EQ(fill_render_work(Stroke::make_stamp(st), info.header, info.templates), 77u * 16);
+    AffineStroke a;
+    a.tx = 0; a.ty = 0; a.a = 16 * 100; a.d = 16 * 100; a.color = {1, 2, 3, 255};
+    // Reaches 102 px around (0, 0): the whole 64 x 48 canvas.
+    EXPECT_EQ(fill_render_work(Stroke::make_affine(a), info.header, info.templates), 64u * 48);
+
+    RandomStream rs;
+    rs.info = info;
+    Frame k;
+    for (int i = 0; i < 10; ++i) k.added.push_back(Stroke::make_affine(a));
+    rs.frames = {k};
+    const std::string path = temp_path("fill-work.spt");
+    ASSERT_TRUE(write_stream(path, rs, Coding::Range).ok());
+    for (uint64_t limit : {uint64_t(64 * 48 * 10 - 1), uint64_t(64 * 48 * 10)}) {
+        ReaderOptions ro;
+        ro.limits.max_fill_work = limit;
+        auto r = Reader::open(path, ro);
+        ASSERT_TRUE(r.ok());
+        auto live = (*r)->strokes_at(0);
+        EXPECT_EQ(live.ok(), limit == 64 * 48 * 10) << limit;
+        if (!live.ok()) {
+            EXPECT_EQ(live.error().code, Code::LimitExceeded);
+            EXPECT_NE(live.error().message.find("rendering work"), std::string::npos) << live.error().message;
+        }
+    }
+    std::remove(path.c_str());
+}
+
 // Curves: the work a reader bounds (SPEC 10) is the canvas pixels of each segment's box.
 TEST(CodingRoundTrip, CurveRenderingWorkIsBounded) {
     CurveStroke c;

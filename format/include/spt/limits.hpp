@@ -27,6 +27,11 @@ struct Limits {
     // the curves of one frame's live list (SPEC.md 10, curve_render_work in render.hpp). 2^33
     // is about ten seconds of one core at worst; a hand-drawn stroke needs thousands.
     uint64_t max_curve_work = 1ull << 33;
+    // The same for stamps and affine strokes: canvas pixels of each one's evaluation box times
+    // its template's samples per pixel, summed over one frame's live list (SPEC.md 10,
+    // fill_render_work in render.hpp): millions of canvas-sized strokes cost a few bytes each.
+    // 2^36 is a few minutes of one core at worst; a 30,000-stroke 1280x720 painting needs ~2^28.
+    uint64_t max_fill_work = 1ull << 36;
     uint32_t max_metadata_bytes = 1u << 24;
     uint32_t max_frames = 0xFFFFFFFEu;
 };

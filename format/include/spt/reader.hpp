@@ -58,8 +58,10 @@ public:
     virtual uint64_t file_size() const = 0;
 };
 
-// Applies one frame to a live stroke list (the normative state update of SPEC.md).
+// Applies one frame to a live stroke list (the normative state update of SPEC.md), and checks
+// the rendering work of the resulting list against `limits` (SPEC.md 10; stamps and affine
+// strokes only when `templates` is given).
 Status apply_frame(std::vector<Stroke>& live, const Frame& frame, const Header& header,
-                   const Limits& limits = {});
+                   const Limits& limits = {}, const std::vector<Template>* templates = nullptr);
 
 }  // namespace spt

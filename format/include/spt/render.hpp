@@ -43,6 +43,10 @@ uint64_t polygon_render_work(const PolygonStroke& p, uint32_t canvas_height);
 // The rendering work of a curve stroke that Limits::max_curve_work bounds (SPEC.md 10): the
 // canvas pixels of each segment's evaluation box (8.5), summed over its segments.
 uint64_t curve_render_work(const CurveStroke& c, uint32_t canvas_width, uint32_t canvas_height);
+// The rendering work of a stamp or affine stroke that Limits::max_fill_work bounds (SPEC.md
+// 10): the canvas pixels of its evaluation box times its template's samples per pixel (N² for
+// an analytic template with an N x N grid, else 1); 0 for other kinds or a missing template.
+uint64_t fill_render_work(const Stroke& s, const Header& header, const std::vector<Template>& templates);
 
 class Renderer {
 public:
