@@ -330,6 +330,23 @@ std::vector<AffineStroke> initial_guesses(int type, const std::vector<double>& d
 
 namespace {
 
+// The vertices without repeats (consecutive, and the last equal to the first).
+std::vector<Pix> distinct_ring(const std::vector<Pix>& v) {
+    std::vector<Pix> p;
+    for (const Pix& q : v)
+        if (p.empty() || q != p.back()) p.push_back(q);
+    while (p.size() > 1 && p.front() == p.back()) p.pop_back();
+    return p;
+}
+
+// Twice the signed area of the outline (positive: clockwise on screen, y down).
+int64_t twice_area(const std::vector<Pix>& p) {
+    int64_t area = 0;
+    for (size_t i = 0; i < p.size(); ++i)
+        area += int64_t(p[i].first) * p[(i + 1) % p.size()].second - int64_t(p[(i + 1) % p.size()].first) * p[i].second;
+    return area;
+}
+
 // geometrize's outline of the edge from pixel a to pixel b takes, along the edge's major axis,
 // every pixel whose centre lies within half a pixel of the line through the two centres (its
 // span fill then closes the rows). A polygon through the pixel centres with each edge moved
@@ -337,17 +354,12 @@ namespace {
 // the half-pixel lattice (Q4 multiples of 8), which codes compactly (SPEC.md 7.4 polygon
 // shift). Where two edges move in different directions a short connector joins them; it
 // encloses no pixel centre besides the vertex's own.
-std::vector<PolygonVertex> lattice_polygon(std::vector<Pix> v) {
-    std::vector<Pix> p;
-    for (const Pix& q : v)
-        if (p.empty() || q != p.back()) p.push_back(q);
-    while (p.size() > 1 && p.front() == p.back()) p.pop_back();
+std::vector<PolygonVertex> lattice_polygon(const std::vector<Pix>& v) {
+    const std::vector<Pix> p = distinct_ring(v);
     const size_t n = p.size();
     std::vector<PolygonVertex> out;
     if (n == 0) return out;
-    int64_t area = 0;
-    for (size_t i = 0; i < n; ++i)
-        area += int64_t(p[i].first) * p[(i + 1) % n].second - int64_t(p[(i + 1) % n].first) * p[i].second;
+    const int64_t area = twice_area(p);
     const int sgn = area >= 0 ? 1 : -1;
     // Centre of pixel (x, y) in Q4 is (16x + 8, 16y + 8); half a pixel is 8.
     std::vector<std::pair<int32_t, int32_t>> shift(n);
@@ -389,17 +401,12 @@ std::vector<PolygonVertex> lattice_polygon(std::vector<Pix> v) {
 // (close to it where the edges turn slowly, as on geometrize's ellipses), so that an n-gon
 // stays an n-gon and codes by the conic prediction (SPEC.md 7.4 step 5). refine() then fixes
 // single vertices.
-std::vector<PolygonVertex> offset_polygon(std::vector<Pix> v) {
-    std::vector<Pix> p;
-    for (const Pix& q : v)
-        if (p.empty() || q != p.back()) p.push_back(q);
-    while (p.size() > 1 && p.front() == p.back()) p.pop_back();
+std::vector<PolygonVertex> offset_polygon(const std::vector<Pix>& v) {
+    const std::vector<Pix> p = distinct_ring(v);
     const size_t n = p.size();
     std::vector<PolygonVertex> out;
     if (n < 3) return out;
-    int64_t area = 0;
-    for (size_t i = 0; i < n; ++i)
-        area += int64_t(p[i].first) * p[(i + 1) % n].second - int64_t(p[(i + 1) % n].first) * p[i].second;
+    const int64_t area = twice_area(p);
     const int64_t sgn = area >= 0 ? 1 : -1;
     for (size_t i = 0; i < n; ++i) {
         const Pix& a = p[(i + n - 1) % n];
