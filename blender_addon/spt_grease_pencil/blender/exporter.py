@@ -18,9 +18,10 @@ import time
 import numpy as np
 
 from ..io import colors, geometry_np, state_np, stream_json
-from ..io.geometry import points_to_curve, points_to_polygon
+from ..io.geometry import points_to_curve
+from ..io.model import MAX_POS, POLYGON
 from ..io.model import Header, SptError, StreamInfo, default_orientations
-from ..io.strokes_np import CURVE_ID, NCOL, StrokeTable, polygon_row
+from ..io.strokes_np import A, B, CURVE_ID, G, GRID, KIND, NCOL, R, X, Y, StrokeTable
 from ..io.writer import write_stored
 from ..spt_tool import pack_coded, temp_path
 from . import gp
@@ -110,20 +111,14 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
         keep[q[~valid]] = False
         if not valid.all():
             warnings.append(f"{where}: {int((~valid).sum())} degenerate quad(s) left out")
-    for i in np.flatnonzero(~is_quad).tolist():
+    poly = ~is_quad & (grid_of[mi] >= 0)
+    if poly.any():
+        _polygons(d, np.flatnonzero(poly), fill_base[mi], grid_of[mi], rows, keep, pool, where, warnings)
+    for i in np.flatnonzero(~is_quad & ~poly).tolist():
         if d.npoints[i] == 0:
             keep[i] = False
             continue
         co, pr, st, vc = d.points(i)
-        if grid_of[mi[i]] >= 0:
-            s = _polygon(co, d.fill[i], fill_base[mi[i]], int(grid_of[mi[i]]))
-            if s is None:
-                keep[i] = False
-                warnings.append(f"{where}: a polygon with fewer than 3 points or out of range was left out")
-            else:
-                rows[i] = polygon_row(*s[1:], [])
-                rows[i, CURVE_ID] = pool.add(np.asarray(s[6]) - s[6][0], 2)
-            continue
         base = line_base[mi[i]]
         vcm = vc.astype(np.float64).mean(axis=0)
         rgb = base[:3] * (1.0 - vcm[3]) + vcm[:3] * vcm[3]
@@ -141,16 +136,36 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
     return rows[keep], d.ordinal[keep]
 
 
-def _polygon(co, fill, base, grid):
-    """A polygon stroke from a GP stroke of a polygon material: its points are the vertices,
-    the colour is the material's fill colour mixed with vertex_color_fill (as quads), the alpha
-    the material's (a GP fill has no alpha of its own)."""
-    fc = fill.astype(np.float64)
-    rgb = base[:3] * (1.0 - fc[3]) + fc[:3] * fc[3]
-    alpha = int(np.clip(np.floor(255.0 * base[3] + 0.5), 0, 255))
-    xy = co.astype(np.float64) * 1000.0
-    return points_to_polygon(zip(xy[:, 0].tolist(), (-xy[:, 2]).tolist()),
-                             tuple(linear_to_codes(rgb).tolist()) + (alpha,), grid)
+def _polygons(d, idx, base, grid, rows, keep, pool, where, warnings):
+    """Strokes `idx` of polygon materials (importer.polygon_materials) as polygon rows, all at
+    once: the points are the vertices rounded to Q4 (as geometry.points_to_polygon), the colour
+    the material's fill colour mixed with vertex_color_fill (as quads), the alpha the
+    material's (a GP fill has no alpha of its own). Thousands of polygons a frame: no per-point
+    Python."""
+    co, start = d.coords(idx)
+    qx = np.floor(co[:, 0].astype(np.float64) * 1000.0 * 16.0 + 0.5).astype(np.int64)
+    qy = np.floor(-(co[:, 2].astype(np.float64) * 1000.0) * 16.0 + 0.5).astype(np.int64)
+    counts = np.diff(start)
+    ok = (counts >= 3) & (grid[idx] != 1) & (grid[idx] >= 0) & (grid[idx] <= 16)
+    if len(qx):
+        far = np.maximum(np.abs(qx), np.abs(qy)) > MAX_POS
+        bad = np.add.reduceat(far.astype(np.int64), np.minimum(start[:-1], len(qx) - 1)) * (counts > 0)
+        ok &= bad == 0
+    b = base[idx]
+    fc = d.fill[idx].astype(np.float64)
+    rgb = linear_to_codes(b[:, :3] * (1.0 - fc[:, 3:4]) + fc[:, :3] * fc[:, 3:4])
+    alpha = np.clip(np.floor(255.0 * b[:, 3] + 0.5), 0, 255).astype(np.int64)
+    for k, i in enumerate(idx.tolist()):
+        if not ok[k]:
+            keep[i] = False
+            if counts[k] == 0:  # an empty stroke: nothing to keep, nothing to say (as other kinds)
+                continue
+            warnings.append(f"{where}: a polygon with fewer than 3 points or out of range was left out")
+            continue
+        s0, s1 = int(start[k]), int(start[k + 1])
+        rows[i, [KIND, X, Y, R, G, B, A, GRID]] = (POLYGON, qx[s0], qy[s0], rgb[k, 0], rgb[k, 1], rgb[k, 2],
+                                                   alpha[k], grid[i])
+        rows[i, CURVE_ID] = pool.add(np.stack([qx[s0:s1] - qx[s0], qy[s0:s1] - qy[s0]], axis=1), 2)
 
 
 def merge_layers(parts):

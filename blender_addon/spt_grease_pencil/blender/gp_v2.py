@@ -276,6 +276,17 @@ class FrameData:
             for i in np.flatnonzero(four).tolist():
                 pts[i].foreach_get('co', co4[i])
 
+    def coords(self, idx):
+        """The points of strokes `idx` (one foreach_get each): co (sum m, 3) float32 and the
+        start of each stroke's points in it (len(idx) + 1 offsets)."""
+        counts = self.npoints[idx]
+        start = np.zeros(len(idx) + 1, dtype=np.int64)
+        np.cumsum(counts, out=start[1:])
+        co = np.empty(3 * int(start[-1]), dtype=np.float32)
+        for k, i in enumerate(idx.tolist()):
+            self._pts[i].foreach_get('co', co[3 * start[k]:3 * start[k + 1]])
+        return co.reshape(-1, 3), start
+
     def points(self, i: int):
         """(co (m, 3), pressure, strength, vertex_color (m, 4)) of stroke i."""
         p = self._pts[i]
