@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "io/image_io.hpp"
 #include "paint/painter.hpp"
 #include "spt/spt.hpp"
@@ -44,23 +45,9 @@ namespace {
 
 constexpr uint32_t kW = 1280, kH = 720;
 
-double thread_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-double wall_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+using bench::median;
+using bench::thread_seconds;
+using bench::wall_seconds;
 
 // Scales `img` to cover kW x kH (bilinear) and crops the centre.
 io::Image cover(const io::Image& img) {

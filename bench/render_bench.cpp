@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "spt/render.hpp"
 
 namespace {
@@ -105,23 +106,9 @@ std::vector<spt::Stroke> curve_frame(int n, uint32_t seed) {
     return v;
 }
 
-// CPU time of this thread: the machine is shared, and wall time would count other processes.
-double thread_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-double wall_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
+using bench::median;
+using bench::thread_seconds;
+using bench::wall_seconds;
 
 // The old path: clear, then draw() stroke after stroke onto the whole canvas.
 void draw_loop(const spt::Renderer& r, spt::Canvas& c, const std::vector<spt::Stroke>& strokes) {
