@@ -13,6 +13,8 @@ namespace spt::detail {
 
 // CRC-32/ISO-HDLC (zlib, PNG). Pass the previous return value to continue a running CRC.
 uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc = 0);
+// The same through tables only (the path of hosts without carry-less multiplication); for tests.
+uint32_t crc32_portable(const uint8_t* data, size_t size, uint32_t crc = 0);
 
 // Appends little-endian fields to a growing buffer.
 class ByteSink {
@@ -75,6 +77,8 @@ public:
     Status u64(uint64_t& v, const char* f) { if (auto s = need(8, f); !s) return s; v = load_u64(p_ + pos_); pos_ += 8; return {}; }
     Status i16(int16_t& v, const char* f) { uint16_t u = 0; auto s = u16(u, f); v = int16_t(u); return s; }
     Status i32(int32_t& v, const char* f) { uint32_t u = 0; auto s = u32(u, f); v = int32_t(u); return s; }
+    // Moves past k bytes the caller has checked are there (k <= left()).
+    void advance(size_t k) { pos_ += k; }
     Status skip(size_t k, const char* f) { if (auto s = need(k, f); !s) return s; pos_ += k; return {}; }
     // ULEB128 of at most 5 bytes holding a u32, in its minimal form.
     Status varint(uint32_t& v, const char* f) {

@@ -1,11 +1,32 @@
 // CRC-32/ISO-HDLC (reflected polynomial 0xEDB88320), as in zlib and PNG. Every chunk a reader
-// decodes is checked, so this runs over every byte of a file: eight bytes a step through eight
-// tables ("slicing by 8": table k maps a byte to its CRC after k further zero bytes) instead of
-// one byte a step through one table, about 5x faster, same values.
+// decodes is checked, so this runs over every byte of a file.
+//
+// Portable path: eight bytes a step through eight tables ("slicing by 8": table k maps a byte
+// to its CRC after k further zero bytes), about 5x faster than a byte a step.
+//
+// x86 with PCLMULQDQ: carry-less multiplication folds the message 64 bytes a step, about 10x
+// faster again. The message is the polynomial M(x) (first byte's lowest bit = highest power);
+// the CRC is M(x)·x^32 mod P with the running value XORed into the first four bytes. A 16-byte
+// block A at some position can be replaced by a block B D bits further on when
+// B ≡ A·x^D (mod P). With A = A_hi·x^64 + A_lo (the register's low quadword holds A_hi, its
+// bits in reflected order):
+//     B = A_hi·(x^(64+D) mod P) + A_lo·(x^D mod P),
+// each product below 2^95, so B fits 128 bits and is XORed onto the data block D bits on.
+// A reflected 64 x 64 product lands one bit lower than the block layout, so the constants are
+// those of D - 1 (x^(63+D) and x^(D-1) mod P), stored with x^i at bit 63 - i. Four lanes fold
+// 512 bits a step; they are folded into one, and the last 16 bytes of state and the tail go
+// through the table: the folded state is a message with the same CRC as what it replaced.
+// The constants are computed, not copied; tests/format/crc32_test.cpp checks both paths
+// against a bitwise CRC on every length and alignment up to 300 bytes and on long buffers.
 #include <array>
 #include <cstring>
 
 #include "byte_io.hpp"
+
+#if defined(__x86_64__) || defined(_M_X64)
+#include <immintrin.h>
+#define SPT_CRC_CLMUL 1
+#endif
 
 namespace spt::detail {
 namespace {
@@ -22,10 +43,9 @@ constexpr Tables make_tables() {
     return t;
 }
 constexpr Tables kTables = make_tables();
-}  // namespace
 
-uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc) {
-    crc = ~crc;
+// The raw CRC update (no inversions) of `size` bytes through the tables.
+uint32_t crc_tables(const uint8_t* data, size_t size, uint32_t crc) {
     const auto& t = kTables;
     size_t i = 0;
     for (; i + 8 <= size; i += 8) {
@@ -36,7 +56,65 @@ uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc) {
               t[3][data[i + 4]] ^ t[2][data[i + 5]] ^ t[1][data[i + 6]] ^ t[0][data[i + 7]];
     }
     for (; i < size; ++i) crc = t[0][(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
-    return ~crc;
+    return crc;
+}
+
+#ifdef SPT_CRC_CLMUL
+// x^n mod P (P = 0x104C11DB7, normal bit order) as a folding constant: x^i at bit 63 - i.
+constexpr uint64_t fold_constant(unsigned n) {
+    uint64_t r = 1;
+    for (unsigned k = 0; k < n; ++k) {
+        r <<= 1;
+        if (r & (uint64_t(1) << 32)) r ^= 0x104C11DB7u;
+    }
+    uint64_t out = 0;
+    for (unsigned i = 0; i < 32; ++i)
+        if (r >> i & 1) out |= uint64_t(1) << (63 - i);
+    return out;
+}
+// {x^(63+D), x^(D-1)} for D = 512 (four lanes) and D = 128 (one lane).
+constexpr uint64_t kFold512Hi = fold_constant(63 + 512), kFold512Lo = fold_constant(512 - 1);
+constexpr uint64_t kFold128Hi = fold_constant(63 + 128), kFold128Lo = fold_constant(128 - 1);
+
+__attribute__((target("pclmul,sse2"))) inline __m128i fold(__m128i a, __m128i k, __m128i next) {
+    return _mm_xor_si128(_mm_xor_si128(_mm_clmulepi64_si128(a, k, 0x00), _mm_clmulepi64_si128(a, k, 0x11)), next);
+}
+
+__attribute__((target("pclmul,sse2"))) uint32_t crc_clmul(const uint8_t* data, size_t size, uint32_t crc) {
+    // size >= 64
+    auto load = [](const uint8_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
+    __m128i a0 = _mm_xor_si128(load(data), _mm_cvtsi32_si128(int(crc)));
+    __m128i a1 = load(data + 16), a2 = load(data + 32), a3 = load(data + 48);
+    size_t i = 64;
+    const __m128i k512 = _mm_set_epi64x(int64_t(kFold512Lo), int64_t(kFold512Hi));
+    for (; i + 64 <= size; i += 64) {
+        a0 = fold(a0, k512, load(data + i));
+        a1 = fold(a1, k512, load(data + i + 16));
+        a2 = fold(a2, k512, load(data + i + 32));
+        a3 = fold(a3, k512, load(data + i + 48));
+    }
+    const __m128i k128 = _mm_set_epi64x(int64_t(kFold128Lo), int64_t(kFold128Hi));
+    __m128i a = fold(fold(fold(a0, k128, a1), k128, a2), k128, a3);
+    for (; i + 16 <= size; i += 16) a = fold(a, k128, load(data + i));
+    alignas(16) uint8_t state[16];
+    _mm_store_si128(reinterpret_cast<__m128i*>(state), a);
+    return crc_tables(data + i, size - i, crc_tables(state, 16, 0));
+}
+
+bool have_clmul() {
+    static const bool yes = __builtin_cpu_supports("pclmul") && __builtin_cpu_supports("sse2");
+    return yes;
+}
+#endif
+}  // namespace
+
+uint32_t crc32_portable(const uint8_t* data, size_t size, uint32_t crc) { return ~crc_tables(data, size, ~crc); }
+
+uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc) {
+#ifdef SPT_CRC_CLMUL
+    if (size >= 64 && have_clmul()) return ~crc_clmul(data, size, ~crc);
+#endif
+    return crc32_portable(data, size, crc);
 }
 
 }  // namespace spt::detail
