@@ -13,11 +13,9 @@ values in this very file, a model that is free here), in bytes. It is not a lowe
 context coder, but a coder has to beat it by the factor shown to reach 3x. Primitive writes
 six-decimal floats whose precision the rendering does not need, so it has no such column.
 """
-import argparse, collections, json, lzma, math, os, re, statistics, subprocess, sys, tempfile, time
+import collections, json, os, re, statistics, subprocess, sys, tempfile, time
 
-def xz(path):
-    with open(path, "rb") as f:
-        return len(lzma.compress(f.read(), preset=9 | lzma.PRESET_EXTREME))
+from foreign_samples import entropy_bits, parse_args, xz_bytes as xz
 
 def order0_bytes(json_path):
     """Sum over the fields of geometrize's shape records (data values and colour) of the
@@ -31,19 +29,10 @@ def order0_bytes(json_path):
                 fields[(sh["type"], i)].append(v)
     except (OSError, ValueError, KeyError, TypeError):
         return None
-    bits = 0.0
-    for values in fields.values():
-        n = len(values)
-        bits -= sum(c * math.log2(c / n) for c in collections.Counter(values).values())
-    return bits / 8
+    return sum(entropy_bits(v) for v in fields.values()) / 8
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--spt", default=os.path.join(here, "..", "build", "bin", "spt"))
-    ap.add_argument("--media", default=os.path.join(here, "..", "..", "shared", "media"))
-    a = ap.parse_args()
-    folder = os.path.join(a.media, "foreign")
+    a, folder = parse_args(__doc__)
     if not os.path.isdir(folder):
         print("no samples in", folder); return 1
     srcs = sorted(f for f in os.listdir(folder) if f.endswith((".svg", ".json")))

@@ -20,16 +20,14 @@ free of model cost and therefore below what a real coder pays:
 The canvas under each shape comes from a float re-rendering of geometrize's shapes (27-33 dB
 against the tool's own PNG): close enough to predict from.
 """
-import argparse, collections, json, lzma, math, os, subprocess, sys, tempfile
+import collections, json, math, os, subprocess, sys, tempfile
+
+from foreign_samples import entropy_bits, parse_args, xz_bytes
 
 try:
     import numpy as np
 except ImportError:
     sys.exit("import_bound.py needs numpy (Debian: apt-get install python3-numpy; or run it with /usr/bin/python3)")
-
-def entropy_bits(values):
-    n = len(values)
-    return -sum(c * math.log2(c / n) for c in collections.Counter(values).values()) if n else 0.0
 
 def laplace_bits(values):
     """Adaptive two-sided geometric model with a running mean |v| as its scale."""
@@ -89,12 +87,7 @@ def analyse(shapes, background, height, width):
     return geometry, colour, canvas
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--spt", default=os.path.join(here, "..", "build", "bin", "spt"))
-    ap.add_argument("--media", default=os.path.join(here, "..", "..", "shared", "media"))
-    a = ap.parse_args()
-    folder = os.path.join(a.media, "foreign")
+    a, folder = parse_args(__doc__)
     samples = sorted(f[:-5] for f in os.listdir(folder) if f.endswith(".json")) if os.path.isdir(folder) else []
     if not samples:
         print("no geometrize JSON samples in", folder); return 1
@@ -115,8 +108,7 @@ def main():
             n = len(shapes)
             best = min(colour.values())
             bound = (geometry + best) / 8
-            with open(svg, "rb") as f:
-                budget = len(lzma.compress(f.read(), preset=9 | lzma.PRESET_EXTREME)) / 3
+            budget = xz_bytes(svg) / 3
             over += bound > budget
             cols = " / ".join(f"{v / n:5.2f}" for v in colour.values())
             print(f"{stem:32} {n:6d} {geometry / 8:8.0f} {cols:>50} {bound:7.0f} {budget:8.0f} {bound / budget:12.2f} "
