@@ -98,14 +98,14 @@ std::vector<uint8_t> write(const std::string& path, const StreamInfo& info, cons
 
 // Painter-like stamps without the painter's image: coarse strokes first, then finer ones, with
 // colours of a smooth gradient (coding 2 is not available for these).
-std::vector<Stroke> synthetic_strokes(const Header& h, size_t n) {
+std::vector<Stroke> synthetic_strokes(const Header& h, size_t templates, size_t n) {
     std::mt19937 rng(7);
     std::vector<Stroke> v;
     const size_t sets = h.sets.size();
     for (size_t i = 0; i < n; ++i) {
         StampStroke s;
         s.set = uint8_t(std::min<size_t>(sets - 1, size_t(std::sqrt(double(i) / double(n)) * double(sets))));
-        s.tmpl = uint8_t(rng() % 4);
+        s.tmpl = uint8_t(rng() % templates);
         s.orient = uint8_t(rng() % h.orientations.size());
         const uint32_t x = rng() % h.width, y = rng() % h.height;
         s.x = int32_t(16 * x + 8);
@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
         synthetic = true;
     }
     if (synthetic) {
-        frame.added = synthetic_strokes(info.header, size_t(max_strokes));
+        frame.added = synthetic_strokes(info.header, info.templates.size(), size_t(max_strokes));
     } else {
         paint::PaintOptions po;
         po.seed = 1;
