@@ -110,13 +110,24 @@ struct SpanRow {
     uint32_t n = 0;    // pixels; 0: empty row
     uint32_t off = 0;  // byte offset of the span's coverage in SpanMask::cov3
 };
+// Narrow masks (w <= kDenseMaxSteps * 64 / 3 pixels) are also kept as a dense box: every row
+// the same number of 64-byte steps of three-byte coverage, zero outside the spans, so that a
+// stroke whose box fits a tile buffer with its apron is blended one full step a row with no
+// span bookkeeping (blend_dense). Most painter strokes are this small; per-row work, not
+// per-pixel work, is what their spans cost. Each step is stored as 128 bytes of (c, 255 - c)
+// pairs in the lane order of the kernel (raster_span.cpp: span_mask_make_dense).
+constexpr uint32_t kDenseStep = 64, kDenseMaxSteps = 2;
 struct SpanMask {
     int32_t x0 = 0, y0 = 0;     // offset of column 0 / row 0 (from the stamp's centre pixel)
     uint32_t w = 0;             // columns: every span lies in [0, w)
     std::vector<SpanRow> rows;  // row j is y0 + j
     std::vector<uint8_t> cov3;
-    size_t bytes() const { return rows.size() * sizeof(SpanRow) + cov3.size(); }
+    uint32_t dense_steps = 0;    // 64-byte steps a dense row; 0: no dense box
+    std::vector<uint8_t> dense;  // rows.size() rows of dense_steps * 128 bytes
+    size_t bytes() const { return rows.size() * sizeof(SpanRow) + cov3.size() + dense.size(); }
 };
+// Fills m.dense from m's spans when m is narrow enough (after its rows and w are final).
+void span_mask_make_dense(SpanMask& m);
 // Appends one row to a SpanMask from one byte of coverage a pixel (n pixels, column 0 at
 // mask column `first`): trims zero ends, stores the span with its padding.
 void span_mask_add_row(SpanMask& m, const uint8_t* cov, int64_t n, int64_t first);
@@ -140,11 +151,19 @@ struct PlacedSpans {
     int32_t ox = 0, oy = 0;  // canvas position of column 0 / row 0
     uint32_t h = 0;          // rows
     Rgba8 c;
+    const uint8_t* dense = nullptr;  // the mask's dense box, if it has one
+    uint32_t dense_steps = 0;
 };
 // Composites p (SPEC 8.6), clipped to t.
 void blend_spans(const BlendTarget& t, const PlacedSpans& p);
 // Composites mask m with its column 0 / row 0 at canvas (ox, oy), clipped to t.
 void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy, Rgba8 c);
+// Composites p's dense box unclipped, row 0 at `origin` (p's canvas pixel (ox, oy)), rows
+// `stride` bytes apart: every byte of the h x dense_steps * 64 box is read and written (bytes
+// outside the spans keep their value). The caller guarantees the box lies in its buffer and
+// that the pixels outside its target are scratch. False, with nothing drawn, when no dense
+// kernel serves the current ISA (the caller then uses blend_spans).
+bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p);
 // Composites one row of one-byte coverage: n pixels starting at canvas (x, y), clipped to t.
 void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c);
 

@@ -1,6 +1,7 @@
 // Stamp footprints, computed once per (set, template, orientation) (SPEC 8.2: a stamp's
 // coverage depends only on the triple and the pixel offset). Two caches:
-//  - span footprints for drawing (raster::SpanMask), under the budget of render.hpp: one
+//  - span footprints for drawing (raster::SpanMask, with a dense box when narrow), under the
+//    budget of render.hpp: one
 //    whose evaluation box could need more than Renderer::kMaxFootprintBytes, or that would
 //    take the cache past Renderer::kFootprintCacheBytes, is not stored; such stamps are drawn
 //    through their inverse map row by row (same pixels, more work per stroke);
@@ -30,7 +31,8 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
             const InverseMap m = stamp_inverse(ss.width, ss.height, header_.orientations[orient], templates_[tmpl].supersample);
             const int64_t w = m.x1 - m.x0 + 1, h = m.y1 - m.y0 + 1;
             // Upper bound of the stored size, checked before anything is allocated.
-            const uint64_t bound = uint64_t(w) * uint64_t(h) * 3 + uint64_t(h) * (kSpanPad + sizeof(SpanRow));
+            const uint64_t bound = uint64_t(w) * uint64_t(h) * 3 + uint64_t(h) * (kSpanPad + sizeof(SpanRow)) +
+                                   (uint64_t(w) * 3 <= kDenseMaxSteps * kDenseStep ? uint64_t(h) * kDenseMaxSteps * 2 * kDenseStep : 0);
             const size_t used = cache_bytes_.load(std::memory_order_relaxed);
             if (bound > kMaxFootprintBytes || used + bound > kFootprintCacheBytes) {
                 f = &kUncached;
@@ -63,6 +65,7 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
                 sm->cov3.shrink_to_fit();
                 sm->x0 = sm->rows.empty() ? 0 : int32_t(m.x0 + lo);
                 sm->y0 = int32_t(m.y0 + int64_t(first));
+                span_mask_make_dense(*sm);
                 cache_bytes_.fetch_add(sm->bytes(), std::memory_order_relaxed);
                 f = sm.get();
                 owned_spans_.push_back(std::move(sm));

@@ -23,8 +23,21 @@ namespace {
 // 128 x 64 px: 24 KB of pixels, half of L1; wide tiles split fewer of the (mostly wider than
 // tall) brush strokes. Measured with bench/render_bench against 64x64 and 128x128.
 constexpr int64_t kTileW = 128, kTileH = 64;
-// Tile buffer rows carry the slack the span kernels may write past a clipped span.
-constexpr size_t kTileStride = 3 * kTileW + kSpanPad;
+// The tile buffer has an apron of scratch pixels on every side, so that a small stroke that
+// crosses the tile's edge is still blended whole from its dense box (raster::blend_dense)
+// instead of span by span with clipping; what lands in the apron is never copied out. Every
+// row also carries the slack the span kernels may write past a clipped span.
+constexpr int64_t kApronX = 24, kApronY = 24;
+constexpr size_t kTileStride = 3 * (kTileW + 2 * kApronX) + kSpanPad;
+constexpr size_t kTileRows = kTileH + 2 * kApronY;
+static_assert(3 * kApronX >= int64_t(kSpanPad), "clipped spans may run kSpanPad bytes into the right apron");
+
+// True when p's dense box lies in the buffer of the tile whose pixel (0, 0) is canvas (x0, y0).
+bool dense_fits(const PlacedSpans& p, int64_t x0, int64_t y0) {
+    const int64_t dx = int64_t(p.ox) - x0, dy = int64_t(p.oy) - y0;
+    return dx >= -kApronX && 3 * dx + int64_t(p.dense_steps * kDenseStep) <= 3 * (kTileW + kApronX) && dy >= -kApronY &&
+           dy + int64_t(p.h) <= kTileH + kApronY;
+}
 
 // One stroke prepared for the tiles: a stamp with a cached footprint is drawn from the record
 // alone (spans.rows set); anything else through draw_into(strokes[index]). Records are copied
@@ -91,6 +104,10 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
                 it.spans.h = uint32_t(f->rows.size());
                 it.spans.ox = int32_t(stamp_pixel(s.stamp.x) + f->x0);
                 it.spans.oy = int32_t(stamp_pixel(s.stamp.y) + f->y0);
+                if (f->dense_steps) {
+                    it.spans.dense = f->dense.data();
+                    it.spans.dense_steps = f->dense_steps;
+                }
             }
         }
         bins.items.push_back(it);
@@ -126,13 +143,14 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
 
     std::atomic<size_t> next{0};
     auto worker = [&]() {
-        thread_local std::vector<uint8_t> buf;
-        buf.resize(kTileStride * size_t(kTileH));
+        thread_local std::vector<uint8_t> buf;  // zeroed once; the apron then holds leftovers
+        buf.resize(kTileStride * kTileRows);
+        uint8_t* const origin = buf.data() + size_t(kApronY) * kTileStride + 3 * size_t(kApronX);
         for (;;) {
             const size_t tile = next.fetch_add(1, std::memory_order_relaxed);
             if (tile >= tiles) break;
             BlendTarget t;
-            t.px = buf.data();
+            t.px = origin;
             t.stride = kTileStride;
             t.x0 = int64_t(tile % size_t(tiles_x)) * kTileW;
             t.y0 = int64_t(tile / size_t(tiles_x)) * kTileH;
@@ -140,14 +158,18 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             t.y1 = std::min(t.y0 + kTileH, H);
             t.slack = true;
             const size_t row_bytes = size_t(t.x1 - t.x0) * 3;
-            for (int64_t y = t.y0; y < t.y1; ++y) std::memcpy(buf.data() + size_t(y - t.y0) * kTileStride, bg_row, row_bytes);
+            for (int64_t y = t.y0; y < t.y1; ++y) std::memcpy(origin + size_t(y - t.y0) * kTileStride, bg_row, row_bytes);
             for (uint32_t k = bins.start[tile]; k < bins.start[tile + 1]; ++k) {
                 const Entry& e = bins.list[k];
+                if (e.spans.dense && dense_fits(e.spans, t.x0, t.y0) &&
+                    blend_dense(origin + (int64_t(e.spans.oy) - t.y0) * int64_t(kTileStride) + 3 * (int64_t(e.spans.ox) - t.x0),
+                                kTileStride, e.spans))
+                    continue;
                 if (e.spans.rows) blend_spans(t, e.spans);
                 else draw_into(t, strokes[e.index]);
             }
             for (int64_t y = t.y0; y < t.y1; ++y)
-                std::memcpy(canvas.row(uint32_t(y)) + 3 * t.x0, buf.data() + size_t(y - t.y0) * kTileStride, row_bytes);
+                std::memcpy(canvas.row(uint32_t(y)) + 3 * t.x0, origin + size_t(y - t.y0) * kTileStride, row_bytes);
         }
     };
 

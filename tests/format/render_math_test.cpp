@@ -120,3 +120,44 @@ TEST(RenderMath, EverySpanPathEqualsBlend8OnEverySpanLength) {
 }
 
 }  // namespace
+
+// The dense-box kernel (blend_dense, used by render() for narrow stamps): every (dst, colour,
+// coverage) triple for an opaque colour (its vpmaddubsw form), and a sweep of translucent
+// alphas, on one- and two-step rows; bytes outside a row's span keep their value.
+TEST(RenderMath, DenseKernelEqualsBlend8Exhaustively) {
+    for (uint32_t width : {21u, 42u}) {
+        spt::raster::SpanMask m;
+        std::vector<uint8_t> cov(width);
+        for (uint32_t j = 0; j < 256; ++j) {
+            std::fill(cov.begin(), cov.end(), uint8_t(j));
+            cov[0] = 1;  // keeps the span the whole row
+            spt::raster::span_mask_add_row(m, cov.data(), width, 0);
+        }
+        m.w = width;
+        spt::raster::span_mask_make_dense(m);
+        ASSERT_EQ(m.dense_steps, width == 21 ? 1u : 2u);
+        const size_t stride = 64 * m.dense_steps;
+        std::vector<uint8_t> px(256 * stride);
+        for (uint32_t a : {255u, 254u, 128u, 1u})
+            for (uint32_t src = 0; src < 256; src += a == 255 ? 1 : 5)
+                for (uint32_t offset : {0u, 126u, 252u}) {
+                    for (size_t j = 0; j < 256; ++j)
+                        for (size_t b = 0; b < stride; ++b) px[j * stride + b] = uint8_t(offset + b + (b >= 3 * width ? j : 0));
+                    const std::vector<uint8_t> before = px;
+                    spt::raster::PlacedSpans p;
+                    p.dense = m.dense.data();
+                    p.dense_steps = m.dense_steps;
+                    p.h = 256;
+                    p.c = spt::Rgba8{uint8_t(src), uint8_t(src ^ 0x55), uint8_t(255 - src), uint8_t(a)};
+                    if (!spt::raster::blend_dense(px.data(), stride, p)) GTEST_SKIP() << "no AVX-512 dense kernel here";
+                    const uint8_t rgb[3] = {p.c.r, p.c.g, p.c.b};
+                    for (size_t j = 0; j < 256; ++j)
+                        for (size_t b = 0; b < stride; ++b) {
+                            const uint32_t c = b < 3 * width ? (b < 3 ? 1u : uint32_t(j)) : 0u;
+                            const uint32_t al = (c * a + 127u) / 255u;
+                            ASSERT_EQ(px[j * stride + b], spt::blend8(before[j * stride + b], rgb[b % 3], al))
+                                << "width " << width << " a " << a << " src " << src << " row " << j << " byte " << b;
+                        }
+                }
+    }
+}
