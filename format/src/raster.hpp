@@ -158,12 +158,13 @@ struct PlacedSpans {
 void blend_spans(const BlendTarget& t, const PlacedSpans& p);
 // Composites mask m with its column 0 / row 0 at canvas (ox, oy), clipped to t.
 void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy, Rgba8 c);
-// Composites p's dense box unclipped, row 0 at `origin` (p's canvas pixel (ox, oy)), rows
-// `stride` bytes apart: every byte of the h x dense_steps * 64 box is read and written (bytes
-// outside the spans keep their value). The caller guarantees the box lies in its buffer and
-// that the pixels outside its target are scratch. False, with nothing drawn, when no dense
-// kernel serves the current ISA (the caller then uses blend_spans).
-bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p);
+// Composites rows [j0, j1) of p's dense box, row j0 at `origin` (p's canvas pixel
+// (ox, oy + j0)), rows `stride` bytes apart: every byte of those rows' dense_steps * 64 bytes
+// is read and written (bytes outside the spans keep their value). The caller guarantees the
+// rows lie in its buffer and that the pixels outside its target are scratch. False, with
+// nothing drawn, when no dense kernel serves the current ISA (the caller then uses
+// blend_spans).
+bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p, uint32_t j0, uint32_t j1);
 // Composites one row of one-byte coverage: n pixels starting at canvas (x, y), clipped to t.
 void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c);
 

@@ -417,10 +417,11 @@ void span_mask_make_dense(SpanMask& m) {
     }
 }
 
-bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p) {
+bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p, uint32_t j0, uint32_t j1) {
     const DenseFn fn = kernels().dense;
     if (!fn || !p.dense) return false;
-    if (p.c.a != 0) fn(origin, stride, p.dense, p.h, p.dense_steps, p.c);
+    if (p.c.a != 0 && j1 > j0)
+        fn(origin, stride, p.dense + size_t(j0) * p.dense_steps * 2 * kDenseStep, j1 - j0, p.dense_steps, p.c);
     return true;
 }
 

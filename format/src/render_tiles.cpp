@@ -23,20 +23,20 @@ namespace {
 // 128 x 64 px: 24 KB of pixels, half of L1; wide tiles split fewer of the (mostly wider than
 // tall) brush strokes. Measured with bench/render_bench against 64x64 and 128x128.
 constexpr int64_t kTileW = 128, kTileH = 64;
-// The tile buffer has an apron of scratch pixels on every side, so that a small stroke that
-// crosses the tile's edge is still blended whole from its dense box (raster::blend_dense)
-// instead of span by span with clipping; what lands in the apron is never copied out. Every
-// row also carries the slack the span kernels may write past a clipped span.
-constexpr int64_t kApronX = 24, kApronY = 24;
-constexpr size_t kTileStride = 3 * (kTileW + 2 * kApronX) + kSpanPad;
-constexpr size_t kTileRows = kTileH + 2 * kApronY;
+// Tile buffer rows have an apron of scratch pixels on both sides, so that a small stroke that
+// crosses the tile's left or right edge is still blended a whole row at a time from its dense
+// box (raster::blend_dense) instead of span by span with clipping; what lands in the apron is
+// never copied out. (Rows are clipped to the tile: that costs nothing per row.) The right
+// apron also holds the slack the span kernels may write past a clipped span.
+constexpr int64_t kApronX = 24;
+constexpr size_t kTileStride = 3 * (kTileW + 2 * kApronX);
 static_assert(3 * kApronX >= int64_t(kSpanPad), "clipped spans may run kSpanPad bytes into the right apron");
 
-// True when p's dense box lies in the buffer of the tile whose pixel (0, 0) is canvas (x0, y0).
-bool dense_fits(const PlacedSpans& p, int64_t x0, int64_t y0) {
-    const int64_t dx = int64_t(p.ox) - x0, dy = int64_t(p.oy) - y0;
-    return dx >= -kApronX && 3 * dx + int64_t(p.dense_steps * kDenseStep) <= 3 * (kTileW + kApronX) && dy >= -kApronY &&
-           dy + int64_t(p.h) <= kTileH + kApronY;
+// True when every row of p's dense box lies in the buffer row of a tile starting at canvas
+// column x0.
+bool dense_fits(const PlacedSpans& p, int64_t x0) {
+    const int64_t dx = int64_t(p.ox) - x0;
+    return dx >= -kApronX && 3 * dx + int64_t(p.dense_steps * kDenseStep) <= 3 * (kTileW + kApronX);
 }
 
 // One stroke prepared for the tiles: a stamp with a cached footprint is drawn from the record
@@ -144,8 +144,8 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     std::atomic<size_t> next{0};
     auto worker = [&]() {
         thread_local std::vector<uint8_t> buf;  // zeroed once; the apron then holds leftovers
-        buf.resize(kTileStride * kTileRows);
-        uint8_t* const origin = buf.data() + size_t(kApronY) * kTileStride + 3 * size_t(kApronX);
+        buf.resize(kTileStride * size_t(kTileH));
+        uint8_t* const origin = buf.data() + 3 * size_t(kApronX);
         for (;;) {
             const size_t tile = next.fetch_add(1, std::memory_order_relaxed);
             if (tile >= tiles) break;
@@ -161,10 +161,13 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             for (int64_t y = t.y0; y < t.y1; ++y) std::memcpy(origin + size_t(y - t.y0) * kTileStride, bg_row, row_bytes);
             for (uint32_t k = bins.start[tile]; k < bins.start[tile + 1]; ++k) {
                 const Entry& e = bins.list[k];
-                if (e.spans.dense && dense_fits(e.spans, t.x0, t.y0) &&
-                    blend_dense(origin + (int64_t(e.spans.oy) - t.y0) * int64_t(kTileStride) + 3 * (int64_t(e.spans.ox) - t.x0),
-                                kTileStride, e.spans))
-                    continue;
+                if (e.spans.dense && dense_fits(e.spans, t.x0)) {
+                    const int64_t j0 = std::max<int64_t>(0, t.y0 - e.spans.oy);
+                    const int64_t j1 = std::min<int64_t>(e.spans.h, t.y1 - e.spans.oy);
+                    if (blend_dense(origin + (e.spans.oy + j0 - t.y0) * int64_t(kTileStride) + 3 * (e.spans.ox - t.x0),
+                                    kTileStride, e.spans, uint32_t(j0), uint32_t(std::max(j0, j1))))
+                        continue;
+                }
                 if (e.spans.rows) blend_spans(t, e.spans);
                 else draw_into(t, strokes[e.index]);
             }

@@ -149,7 +149,7 @@ TEST(RenderMath, DenseKernelEqualsBlend8Exhaustively) {
                     p.dense_steps = m.dense_steps;
                     p.h = 256;
                     p.c = spt::Rgba8{uint8_t(src), uint8_t(src ^ 0x55), uint8_t(255 - src), uint8_t(a)};
-                    if (!spt::raster::blend_dense(px.data(), stride, p)) GTEST_SKIP() << "no AVX-512 dense kernel here";
+                    if (!spt::raster::blend_dense(px.data(), stride, p, 0, 256)) GTEST_SKIP() << "no AVX-512 dense kernel here";
                     const uint8_t rgb[3] = {p.c.r, p.c.g, p.c.b};
                     for (size_t j = 0; j < 256; ++j)
                         for (size_t b = 0; b < stride; ++b) {
@@ -160,4 +160,34 @@ TEST(RenderMath, DenseKernelEqualsBlend8Exhaustively) {
                         }
                 }
     }
+}
+
+// blend_dense on a row range (render() clips a dense box to the tile's rows): only rows
+// [j0, j1) of the box are drawn, row j0 at the origin given.
+TEST(RenderMath, DenseKernelDrawsOnlyTheRowsAsked) {
+    spt::raster::SpanMask m;
+    std::vector<uint8_t> cov(30);
+    for (uint32_t j = 0; j < 40; ++j) {
+        for (uint32_t i = 0; i < 30; ++i) cov[i] = uint8_t(1 + (i * 37 + j * 11) % 255);
+        spt::raster::span_mask_add_row(m, cov.data(), 30, 0);
+    }
+    m.w = 30;
+    spt::raster::span_mask_make_dense(m);
+    const size_t stride = 64 * m.dense_steps;
+    std::vector<uint8_t> px(40 * stride);
+    for (size_t i = 0; i < px.size(); ++i) px[i] = uint8_t(i * 13);
+    const std::vector<uint8_t> before = px;
+    spt::raster::PlacedSpans p;
+    p.dense = m.dense.data();
+    p.dense_steps = m.dense_steps;
+    p.h = 40;
+    p.c = spt::Rgba8{200, 10, 90, 255};
+    if (!spt::raster::blend_dense(px.data() + 17 * stride, stride, p, 17, 23)) GTEST_SKIP() << "no AVX-512 dense kernel here";
+    const uint8_t rgb[3] = {p.c.r, p.c.g, p.c.b};
+    for (size_t j = 0; j < 40; ++j)
+        for (size_t b = 0; b < stride; ++b) {
+            const bool drawn = j >= 17 && j < 23 && b < 90;
+            const uint32_t c = drawn ? 1 + (uint32_t(b / 3) * 37 + uint32_t(j) * 11) % 255 : 0;
+            ASSERT_EQ(px[j * stride + b], spt::blend8(before[j * stride + b], rgb[b % 3], c)) << "row " << j << " byte " << b;
+        }
 }
