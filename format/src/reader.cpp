@@ -41,12 +41,17 @@ public:
     const std::vector<Error>& warnings() const override { return warnings_; }
     uint64_t file_size() const override { return src_->size(); }
 
-    Result<Frame> read_frame(size_t pos) override { return decode(pos, nullptr); }
+    Result<Frame> read_frame(size_t pos) override {
+        Frame f;
+        SPT_TRY(decode(pos, nullptr, f));
+        return f;
+    }
+    Status read_frame(size_t pos, Frame& out) override { return decode(pos, nullptr, out); }
     Result<const std::vector<Stroke>*> strokes_at(size_t pos) override;
     Result<FieldStats> field_stats(size_t pos) override {
         FieldStats fs;
-        auto f = decode(pos, &fs);
-        if (!f) return f.error();
+        Frame f;
+        SPT_TRY(decode(pos, &fs, f));
         return fs;
     }
 
@@ -61,7 +66,8 @@ private:
     std::string frame_where(uint32_t index, uint64_t off) const {
         return "frame " + std::to_string(index) + " (FRAM chunk" + at(off) + ")";
     }
-    Result<Frame> decode(size_t pos, FieldStats* stats);
+    // Decodes frame `pos` into f, reusing f's memory (and the reader's chunk buffer).
+    Status decode(size_t pos, FieldStats* stats, Frame& f);
     void warn(Error e) { warnings_.push_back(std::move(e)); }
 
     std::unique_ptr<ByteSource> src_;
@@ -77,6 +83,11 @@ private:
     std::vector<Stroke> live_;
     size_t live_pos_ = SIZE_MAX;
     std::unique_ptr<Renderer> renderer_;  // coding 2 frames render while they decode
+    // A frame chunk's payload buffer kept between decodes, so that reading frame after frame
+    // does not allocate (and fault in) a fresh buffer each time. decode() borrows it (a nested
+    // decode, via strokes_at for coding 2, finds it empty and allocates its own).
+    std::vector<uint8_t> spare_payload_;
+    Frame scratch_frame_;  // strokes_at's decoded frame, reused the same way
 };
 
 Status ReaderImpl::read_chunk(uint64_t off, Chunk& c, bool whole) {
@@ -344,13 +355,19 @@ Status ReaderImpl::open() {
     return {};
 }
 
-Result<Frame> ReaderImpl::decode(size_t pos, FieldStats* stats) {
+Status ReaderImpl::decode(size_t pos, FieldStats* stats, Frame& f) {
     if (pos >= frames_.size())
         return make_error(Code::InvalidArgument, "frame " + std::to_string(pos) + " does not exist (" +
                                                      std::to_string(frames_.size()) + " frames)");
     const FrameEntry& e = frames_[pos];
     const std::string where = frame_where(e.index, e.offset);
     Chunk c;
+    c.payload.swap(spare_payload_);
+    struct GiveBack {
+        std::vector<uint8_t>& from;
+        std::vector<uint8_t>& to;
+        ~GiveBack() { to.swap(from); }
+    } give_back{c.payload, spare_payload_};
     if (auto st = read_chunk(e.offset, c, true); !st)
         return make_error(st.error().code, where + ": " + st.error().message, st.error().offset);
     if (!detail::is_type(c.type, "FRAM") || c.length < 8)
@@ -387,11 +404,11 @@ Result<Frame> ReaderImpl::decode(size_t pos, FieldStats* stats) {
             ctx.prev_live = live_.size();
         }
     }
-    Frame f;
     f.index = fh.index;
+    f.replay = ReplayInfo();
     SPT_TRY(detail::decode_frame_body(FrameType(fh.type), Coding(fh.coding), c.payload.data() + 8, c.length - 8, ctx, f, nullptr));
     f.index = fh.index;
-    return f;
+    return {};
 }
 
 Result<const std::vector<Stroke>*> ReaderImpl::strokes_at(size_t pos) {
@@ -404,9 +421,9 @@ Result<const std::vector<Stroke>*> ReaderImpl::strokes_at(size_t pos) {
     if (live_pos_ != SIZE_MAX && live_pos_ >= start && live_pos_ < pos) start = live_pos_ + 1;
     else live_pos_ = SIZE_MAX;
     for (size_t i = start; i <= pos; ++i) {
-        auto f = decode(i, nullptr);
-        if (!f) { live_pos_ = SIZE_MAX; live_.clear(); return f.error(); }
-        if (auto st = apply_frame(live_, *f, info_.header, opts_.limits, &info_.templates); !st) {
+        // Not re-entered: frame i's base (for coding 2) is the live list of frame i - 1.
+        if (auto st = decode(i, nullptr, scratch_frame_); !st) { live_pos_ = SIZE_MAX; live_.clear(); return st.error(); }
+        if (auto st = apply_frame(live_, scratch_frame_, info_.header, opts_.limits, &info_.templates); !st) {
             live_pos_ = SIZE_MAX;
             live_.clear();
             const auto& e = frames_[i];

@@ -55,6 +55,14 @@ void check_stream(const RandomStream& rs, uint64_t seed, Coding coding) {
         ASSERT_TRUE(s.ok());
         EXPECT_EQ(**s, lives[i]);
     }
+    // Decoding into one reused Frame, backwards (key frames after inter frames, whose removals
+    // and motion must not linger), gives the same frames.
+    Frame reused;
+    for (size_t i = rs.frames.size(); i-- > 0;) {
+        const Status st = rd.read_frame(i, reused);
+        ASSERT_TRUE(st.ok()) << st.error().message;
+        EXPECT_TRUE(same_frame(reused, rs.frames[i])) << "frame " << i << " into a reused Frame";
+    }
     // Reading from memory gives the same.
     const auto bytes = read_bytes(path);
     auto m = Reader::open_memory(bytes.data(), bytes.size());

@@ -49,6 +49,9 @@ public:
 
     // Decodes one frame's stored record (no state applied).
     virtual Result<Frame> read_frame(size_t frame_pos) = 0;
+    // The same into `out`, reusing its memory: a player reading frame after frame allocates
+    // nothing once its Frame has grown. On error `out` holds no complete frame.
+    virtual Status read_frame(size_t frame_pos, Frame& out) = 0;
     // The live stroke list after applying frames up to `frame_pos`, decoding from the nearest
     // key frame at or before it. Sequential calls are incremental.
     virtual Result<const std::vector<Stroke>*> strokes_at(size_t frame_pos) = 0;
