@@ -162,14 +162,26 @@ __attribute__((target("avx512f,avx512bw"))) inline __m512i lanes32(__m512i d, __
     return _mm512_srli_epi16(_mm512_mulhi_epu16(v, m), 7);
 }
 
-// Opaque colours: the vpmaddubsw form of the blend (see dense_avx512_t below), with the
-// (c, 255 - c) pairs formed from the span's coverage.
+// The vpmaddubsw form of an opaque blend (A = 255, so alpha = coverage c), 64 bytes: with the
+// (c, 255 - c) pairs in the unpacklo/unpackhi order and the pixels (sd) and colour (sp) moved
+// to signed bytes (x - 128), c * (p - 128) + (255 - c) * (d - 128) = c * p + (255 - c) * d -
+// 128 * 255, which lies in [-32640, 32385] (no saturation); adding 32640 + 127 gives the rounded
+// numerator of SPEC 8.6 in [127, 65152], divided by 255 as everywhere else.
+__attribute__((target("avx512f,avx512bw"))) inline __m512i opaque_pairs64(__m512i pairs_lo, __m512i pairs_hi, __m512i sp,
+                                                                          __m512i sd) {
+    const __m512i bias = _mm512_set1_epi16(32640 + 127), m = _mm512_set1_epi16(int16_t(0x8081));
+    const __m512i lo = _mm512_maddubs_epi16(pairs_lo, _mm512_unpacklo_epi8(sp, sd));
+    const __m512i hi = _mm512_maddubs_epi16(pairs_hi, _mm512_unpackhi_epi8(sp, sd));
+    return _mm512_packus_epi16(_mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(lo, bias), m), 7),
+                               _mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(hi, bias), m), 7));
+}
+
+// Opaque colours: opaque_pairs64, with the (c, 255 - c) pairs formed from the span's coverage.
 template <bool Opaque>
 __attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
                                                                       uint32_t bytes, uint32_t a8) {
     const __m512i a = _mm512_set1_epi16(int16_t(a8)), z = _mm512_setzero_si512();
     const __m512i k80 = _mm512_set1_epi8(int8_t(0x80)), ones = _mm512_set1_epi8(-1);
-    const __m512i bias = _mm512_set1_epi16(32640 + 127), m = _mm512_set1_epi16(int16_t(0x8081));
     uint32_t ph = 0;  // k % 3; k grows by 64, so the phase by 1 mod 3
     for (uint32_t k = 0; k < bytes; k += 64) {
         const uint32_t n = bytes - k;
@@ -180,11 +192,9 @@ __attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* d
         // unpack/pack work per 128-bit lane, so the bytes come back in order.
         __m512i r;
         if (Opaque) {
-            const __m512i nc = _mm512_xor_si512(c, ones), sd = _mm512_xor_si512(d, k80), sp = _mm512_xor_si512(p, k80);
-            const __m512i lo = _mm512_maddubs_epi16(_mm512_unpacklo_epi8(c, nc), _mm512_unpacklo_epi8(sp, sd));
-            const __m512i hi = _mm512_maddubs_epi16(_mm512_unpackhi_epi8(c, nc), _mm512_unpackhi_epi8(sp, sd));
-            r = _mm512_packus_epi16(_mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(lo, bias), m), 7),
-                                    _mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(hi, bias), m), 7));
+            const __m512i nc = _mm512_xor_si512(c, ones);
+            r = opaque_pairs64(_mm512_unpacklo_epi8(c, nc), _mm512_unpackhi_epi8(c, nc), _mm512_xor_si512(p, k80),
+                               _mm512_xor_si512(d, k80));
         } else {
             r = _mm512_packus_epi16(
                 lanes32<Opaque>(_mm512_unpacklo_epi8(d, z), _mm512_unpacklo_epi8(c, z), _mm512_unpacklo_epi8(p, z), a),
@@ -197,28 +207,19 @@ __attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* d
 
 // A dense box (raster.hpp: SpanMask::dense): Steps full 64-byte steps a row, no masks and no
 // size classes. Rows start on a pixel, so the colour pattern has the same phase in every row
-// and is prepared once per stroke.
-// Opaque strokes (A = 255, so alpha = coverage c) use one vpmaddubsw per 32 bytes: with the
-// pairs (c, 255 - c) stored in the box and the pixels and colour moved to signed bytes
-// (x - 128), c * (p - 128) + (255 - c) * (d - 128) = c * p + (255 - c) * d - 128 * 255, which
-// lies in [-32640, 32385] (no saturation); adding 32640 + 127 gives the rounded numerator of
-// SPEC 8.6 in [127, 65152], divided by 255 as everywhere else.
+// and is prepared once per stroke. Opaque strokes use opaque_pairs64 on the stored pairs.
 template <bool Opaque, int Steps>
 __attribute__((target("avx512f,avx512bw"))) inline void dense_avx512_t(uint8_t* dst, size_t stride, const uint8_t* pairs,
                                                                        uint32_t h, const uint8_t* pat, uint32_t a8) {
-    const __m512i m = _mm512_set1_epi16(int16_t(0x8081));
     if (Opaque) {
-        const __m512i k80 = _mm512_set1_epi8(int8_t(0x80)), bias = _mm512_set1_epi16(32640 + 127);
+        const __m512i k80 = _mm512_set1_epi8(int8_t(0x80));
         __m512i ps[Steps];
         for (int s = 0; s < Steps; ++s) ps[s] = _mm512_xor_si512(_mm512_loadu_si512(pat + (64 * s) % 3), k80);
         for (uint32_t j = 0; j < h; ++j, dst += stride, pairs += 128 * Steps) {
             for (int s = 0; s < Steps; ++s) {
                 const __m512i d = _mm512_xor_si512(_mm512_loadu_si512(dst + 64 * s), k80);
-                const __m512i lo = _mm512_maddubs_epi16(_mm512_loadu_si512(pairs + 128 * s), _mm512_unpacklo_epi8(ps[s], d));
-                const __m512i hi = _mm512_maddubs_epi16(_mm512_loadu_si512(pairs + 128 * s + 64), _mm512_unpackhi_epi8(ps[s], d));
-                _mm512_storeu_si512(dst + 64 * s,
-                                    _mm512_packus_epi16(_mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(lo, bias), m), 7),
-                                                        _mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(hi, bias), m), 7)));
+                _mm512_storeu_si512(dst + 64 * s, opaque_pairs64(_mm512_loadu_si512(pairs + 128 * s),
+                                                                 _mm512_loadu_si512(pairs + 128 * s + 64), ps[s], d));
             }
         }
     } else {
