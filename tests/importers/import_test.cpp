@@ -18,8 +18,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// One folder per test process (CTest runs each case as its own process), removed at exit.
 fs::path temp_dir() {
-    fs::path d = fs::temp_directory_path() / ("spt_import_test_" + std::to_string(::getpid()));
+    static const fs::path d = fs::temp_directory_path() / ("spt_import_test_" + std::to_string(::getpid()));
+    static const struct RemoveAtExit {
+        ~RemoveAtExit() { std::error_code ec; fs::remove_all(d, ec); }
+    } remove_at_exit;
     fs::create_directories(d);
     return d;
 }

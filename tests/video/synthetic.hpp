@@ -40,11 +40,20 @@ inline std::vector<uint8_t> scene_frame(int shot, double t, uint32_t w, uint32_t
     return rgb;
 }
 
-// A fresh, empty temporary folder for one test.
+// A fresh, empty temporary folder for one test, removed when the test process exits (pass or
+// fail), so that repeated test runs do not fill the temp directory.
 inline std::filesystem::path temp_dir(const std::string& name) {
+    static struct RemoveAtExit {
+        std::vector<std::filesystem::path> dirs;
+        ~RemoveAtExit() {
+            std::error_code ec;
+            for (const auto& d : dirs) std::filesystem::remove_all(d, ec);
+        }
+    } made;
     auto d = std::filesystem::temp_directory_path() / ("spt_video_test_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(d);
     std::filesystem::create_directories(d);
+    made.dirs.push_back(d);
     return d;
 }
 
