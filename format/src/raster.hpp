@@ -124,8 +124,22 @@ struct SpanMask {
     std::vector<uint8_t> cov3;
     uint32_t dense_steps = 0;    // 64-byte steps a dense row; 0: no dense box
     std::vector<uint8_t> dense;  // rows.size() rows of dense_steps * 128 bytes
-    size_t bytes() const { return rows.size() * sizeof(SpanRow) + cov3.size() + dense.size(); }
+    // For occlusion culling in whole-frame rendering (raster_cull.hpp):
+    // the opaque core, where a stroke of alpha 255 leaves exactly its colour whatever lay below
+    // (SPEC 8.6): bit i of core[k * rows.size() + j] is set when column 64 * k + i of row j has
+    // coverage 255 (word-column-major, so that one word of consecutive rows is contiguous);
+    uint32_t core_words = 0;     // (w + 63) / 64
+    std::vector<uint64_t> core;  // core_words * rows.size()
+    // and each row's span as lo | (lo + n) << 16 (w < 65536 for masks that keep a core).
+    std::vector<uint32_t> extent;
+    size_t bytes() const {
+        return rows.size() * sizeof(SpanRow) + cov3.size() + dense.size() + core.size() * sizeof(uint64_t) +
+               extent.size() * sizeof(uint32_t);
+    }
 };
+// Fills m.core and m.extent from m's spans (after its rows and w are final); leaves them empty
+// when w >= 65536.
+void span_mask_make_core(SpanMask& m);
 // Fills m.dense from m's spans when m is narrow enough (after its rows and w are final).
 void span_mask_make_dense(SpanMask& m);
 // Appends one row to a SpanMask from one byte of coverage a pixel (n pixels, column 0 at
@@ -153,6 +167,9 @@ struct PlacedSpans {
     Rgba8 c;
     const uint8_t* dense = nullptr;  // the mask's dense box, if it has one
     uint32_t dense_steps = 0;
+    const uint64_t* core = nullptr;  // the mask's opaque core (SpanMask::core), or nullptr
+    const uint32_t* extent = nullptr;  // SpanMask::extent
+    uint32_t core_words = 0;
 };
 // Composites p (SPEC 8.6), clipped to t.
 void blend_spans(const BlendTarget& t, const PlacedSpans& p);
@@ -165,13 +182,21 @@ void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy
 // nothing drawn, when no dense kernel serves the current ISA (the caller then uses
 // blend_spans).
 bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p, uint32_t j0, uint32_t j1);
+// Composites p clipped to t like blend_spans, each row further clipped to the columns
+// [cols[2 * i], cols[2 * i + 1]) relative to t.x0, where i counts p's rows from the first one
+// inside t; rows with an empty range are skipped. Callers pass ranges inside the row's span
+// (occlusion culling: only the columns that later strokes leave visible).
+void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols);
+// True when blend_dense draws on this ISA.
+bool dense_available();
 // Composites one row of one-byte coverage: n pixels starting at canvas (x, y), clipped to t.
 void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c);
 
 enum class BlendIsa { Best, Scalar, Sse2, Avx2, Avx512 };
-// Test hook: forces the span kernels of blend_spans/blend_cov_row onto one ISA (Best: the
-// fastest available). Not thread-safe; tests only.
+// Test hook: forces the span kernels of blend_spans/blend_cov_row and the culling kernels
+// (raster_cull.hpp) onto one ISA (Best: the fastest available). Not thread-safe; tests only.
 void force_span_isa(BlendIsa isa);
+BlendIsa forced_span_isa();
 bool blend_isa_available(BlendIsa isa);
 
 }  // namespace spt::raster

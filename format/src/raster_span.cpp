@@ -289,9 +289,28 @@ __attribute__((target("avx2"))) inline void make_pattern_avx2(uint8_t* pat96, Rg
         SPAN(row + 3 * (xs - t.x0), p.cov3 + r.off + 3 * (xs - s), pat, uint32_t(3 * (xe - xs)), p.c.a, t.slack); \
     }
 
+// The same, each row clipped further to its visible columns (blend_spans_cols).
+#define SPT_SPANS_COLS_LOOP(SPAN, PATTERN)                                                              \
+    alignas(32) uint8_t pat[96];                                                                      \
+    PATTERN(pat, p.c);                                                                                \
+    const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy), j1 = std::min<int64_t>(p.h, t.y1 - p.oy);   \
+    uint8_t* row = t.px + (p.oy + j0 - t.y0) * int64_t(t.stride);                                     \
+    for (int64_t j = j0; j < j1; ++j, row += t.stride, cols += 2) {                                   \
+        if (cols[0] >= cols[1]) continue;                                                             \
+        const int64_t s = p.ox + p.rows[j].lo, xs = t.x0 + cols[0];                                   \
+        SPAN(row + 3 * int64_t(cols[0]), p.cov3 + p.rows[j].off + 3 * (xs - s), pat,                   \
+             uint32_t(3 * (cols[1] - cols[0])), p.c.a, t.slack);                                      \
+    }
+
 void spans_scalar(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_scalar, make_pattern) }
+void spans_cols_scalar(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
+    SPT_SPANS_COLS_LOOP(span_scalar, make_pattern)
+}
 #ifdef SPT_SPAN_X86
 void spans_sse2(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_sse2, make_pattern) }
+void spans_cols_sse2(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
+    SPT_SPANS_COLS_LOOP(span_sse2, make_pattern)
+}
 __attribute__((target("avx2"))) inline void span_avx2_inl(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
                                                           uint32_t bytes, uint32_t a, bool slack) {
     if (a == 255) span_avx2_t<true>(dst, cov, pat, bytes, a, slack);
@@ -304,6 +323,9 @@ __attribute__((target("avx2"))) void span_avx2(uint8_t* dst, const uint8_t* cov,
 __attribute__((target("avx2"))) void spans_avx2(const BlendTarget& t, const PlacedSpans& p) {
     SPT_SPANS_LOOP(span_avx2_inl, make_pattern_avx2)
 }
+__attribute__((target("avx2"))) void spans_cols_avx2(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
+    SPT_SPANS_COLS_LOOP(span_avx2_inl, make_pattern_avx2)
+}
 __attribute__((target("avx512f,avx512bw"))) inline void span_avx512_inl(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
                                                                         uint32_t bytes, uint32_t a, bool) {
     if (a == 255) span_avx512_t<true>(dst, cov, pat, bytes, a);
@@ -315,6 +337,10 @@ __attribute__((target("avx512f,avx512bw"))) void span_avx512(uint8_t* dst, const
 }
 __attribute__((target("avx512f,avx512bw"))) void spans_avx512(const BlendTarget& t, const PlacedSpans& p) {
     SPT_SPANS_LOOP(span_avx512_inl, make_pattern_avx2)
+}
+__attribute__((target("avx512f,avx512bw"))) void spans_cols_avx512(const BlendTarget& t, const PlacedSpans& p,
+                                                                   const uint8_t* cols) {
+    SPT_SPANS_COLS_LOOP(span_avx512_inl, make_pattern_avx2)
 }
 __attribute__((target("avx512f,avx512bw"))) void dense_avx512(uint8_t* dst, size_t stride, const uint8_t* cov, uint32_t h,
                                                               uint32_t steps, Rgba8 c) {
@@ -330,12 +356,16 @@ __attribute__((target("avx512f,avx512bw"))) void dense_avx512(uint8_t* dst, size
 }
 #endif
 #undef SPT_SPANS_LOOP
+#undef SPT_SPANS_COLS_LOOP
 
 using SpansFn = void (*)(const BlendTarget&, const PlacedSpans&);
 using DenseFn = void (*)(uint8_t*, size_t, const uint8_t*, uint32_t, uint32_t, Rgba8);
 
+using SpansColsFn = void (*)(const BlendTarget&, const PlacedSpans&, const uint8_t*);
+
 struct Kernels {
     SpansFn spans;
+    SpansColsFn spans_cols;
     SpanFn span;
     DenseFn dense;  // nullptr: this ISA has no dense kernel
 };
@@ -345,13 +375,13 @@ static_assert(kDenseStep == 64 && kDenseMaxSteps == 2, "dense_avx512 handles one
 Kernels pick(BlendIsa isa) {
 #ifdef SPT_SPAN_X86
     const bool avx2 = blend_isa_available(BlendIsa::Avx2), avx512 = blend_isa_available(BlendIsa::Avx512);
-    if (isa == BlendIsa::Scalar) return {spans_scalar, span_scalar, nullptr};
-    if (isa == BlendIsa::Sse2 || !avx2) return {spans_sse2, span_sse2, nullptr};
-    if (isa == BlendIsa::Avx2 || !avx512) return {spans_avx2, span_avx2, nullptr};
-    return {spans_avx512, span_avx512, dense_avx512};
+    if (isa == BlendIsa::Scalar) return {spans_scalar, spans_cols_scalar, span_scalar, nullptr};
+    if (isa == BlendIsa::Sse2 || !avx2) return {spans_sse2, spans_cols_sse2, span_sse2, nullptr};
+    if (isa == BlendIsa::Avx2 || !avx512) return {spans_avx2, spans_cols_avx2, span_avx2, nullptr};
+    return {spans_avx512, spans_cols_avx512, span_avx512, dense_avx512};
 #else
     (void)isa;
-    return {spans_scalar, span_scalar, nullptr};
+    return {spans_scalar, spans_cols_scalar, span_scalar, nullptr};
 #endif
 }
 
@@ -366,6 +396,7 @@ const Kernels& kernels() {
 }  // namespace
 
 void force_span_isa(BlendIsa isa) { g_forced = isa; }
+BlendIsa forced_span_isa() { return g_forced; }
 
 bool blend_isa_available(BlendIsa isa) {
 #ifdef SPT_SPAN_X86
@@ -416,6 +447,33 @@ void span_mask_make_dense(SpanMask& m) {
                         out[64 * half + 16 * lane + 2 * i + 1] = uint8_t(255 - c);
                     }
     }
+}
+
+void span_mask_make_core(SpanMask& m) {
+    m.core.clear();
+    m.extent.clear();
+    m.core_words = 0;
+    if (m.w >= 65536) return;
+    const size_t h = m.rows.size();
+    m.core_words = (m.w + 63) / 64;
+    m.core.assign(h * m.core_words, 0);
+    m.extent.assign(h, 0);
+    for (size_t j = 0; j < h; ++j) {
+        const SpanRow& r = m.rows[j];
+        if (r.n) m.extent[j] = uint32_t(r.lo) | (uint32_t(r.lo) + r.n) << 16;
+        for (uint32_t i = 0; i < r.n; ++i)
+            if (m.cov3[r.off + 3 * size_t(i)] == 255) {
+                const uint32_t col = uint32_t(r.lo) + i;
+                m.core[(col / 64) * h + j] |= uint64_t(1) << (col % 64);
+            }
+    }
+}
+
+bool dense_available() { return kernels().dense != nullptr; }
+
+void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
+    if (p.c.a == 0) return;
+    kernels().spans_cols(t, p, cols);
 }
 
 bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p, uint32_t j0, uint32_t j1) {

@@ -32,7 +32,8 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
             const int64_t w = m.x1 - m.x0 + 1, h = m.y1 - m.y0 + 1;
             // Upper bound of the stored size, checked before anything is allocated.
             const uint64_t bound = uint64_t(w) * uint64_t(h) * 3 + uint64_t(h) * (kSpanPad + sizeof(SpanRow)) +
-                                   (uint64_t(w) * 3 <= kDenseMaxSteps * kDenseStep ? uint64_t(h) * kDenseMaxSteps * 2 * kDenseStep : 0);
+                                   (uint64_t(w) * 3 <= kDenseMaxSteps * kDenseStep ? uint64_t(h) * kDenseMaxSteps * 2 * kDenseStep : 0) +
+                                   uint64_t(h) * (((uint64_t(w) + 63) / 64) * sizeof(uint64_t) + sizeof(uint32_t));
             const size_t used = cache_bytes_.load(std::memory_order_relaxed);
             if (bound > kMaxFootprintBytes || used + bound > kFootprintCacheBytes) {
                 f = &kUncached;
@@ -66,6 +67,7 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
                 sm->x0 = sm->rows.empty() ? 0 : int32_t(m.x0 + lo);
                 sm->y0 = int32_t(m.y0 + int64_t(first));
                 span_mask_make_dense(*sm);
+                span_mask_make_core(*sm);
                 cache_bytes_.fetch_add(sm->bytes(), std::memory_order_relaxed);
                 f = sm.get();
                 owned_spans_.push_back(std::move(sm));

@@ -12,6 +12,7 @@
 #include <string>
 #include <thread>
 
+#include "raster_cull.hpp"
 #include "render_impl.hpp"
 
 namespace spt {
@@ -31,6 +32,8 @@ constexpr int64_t kTileW = 128, kTileH = 64;
 constexpr int64_t kApronX = 24;
 constexpr size_t kTileStride = 3 * (kTileW + 2 * kApronX);
 static_assert(3 * kApronX >= int64_t(kSpanPad), "clipped spans may run kSpanPad bytes into the right apron");
+static_assert(kTileW == CullBits::kTileCols && kTileH == CullBits::kRows && kApronX <= CullBits::kBias,
+              "the culling bits cover a tile and the part of its apron that narrow strokes reach");
 
 // True when every row of p's dense box lies in the buffer row of a tile starting at canvas
 // column x0.
@@ -47,6 +50,12 @@ struct Entry {
     uint32_t index = 0;
 };
 
+// Occlusion culling (raster_cull.hpp). Before drawing, a tile walks its strokes backwards;
+// each stroke drawn span by span (the big, coarse ones: painters put them first and cover
+// most of their pixels) gets, per row, the columns from its first to its last pixel that no
+// later stroke covers opaquely; every opaque stroke then marks its core. Narrow strokes are
+// not culled (a row of a dense box is blended whole, about as cheap as testing it) but mark.
+// Only pixels that a later stroke overwrites completely are skipped: the bytes are the same.
 struct Bins {
     std::vector<Entry> items;
     std::vector<uint16_t> range;  // per item: first and last tile column, first and last tile row
@@ -104,6 +113,11 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
                 it.spans.h = uint32_t(f->rows.size());
                 it.spans.ox = int32_t(stamp_pixel(s.stamp.x) + f->x0);
                 it.spans.oy = int32_t(stamp_pixel(s.stamp.y) + f->y0);
+                if (!f->extent.empty()) {
+                    it.spans.core = f->core.data();
+                    it.spans.extent = f->extent.data();
+                    it.spans.core_words = f->core_words;
+                }
                 if (f->dense_steps) {
                     it.spans.dense = f->dense.data();
                     it.spans.dense_steps = f->dense_steps;
@@ -141,9 +155,12 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
         bg_row[3 * i + 2] = header_.background.b;
     }
 
+    const bool dense = dense_available();
     std::atomic<size_t> next{0};
     auto worker = [&]() {
         thread_local std::vector<uint8_t> buf;  // zeroed once; the apron then holds leftovers
+        thread_local CullBits cull;
+        thread_local std::vector<uint8_t> ranges;
         buf.resize(kTileStride * size_t(kTileH));
         uint8_t* const origin = buf.data() + 3 * size_t(kApronX);
         for (;;) {
@@ -159,17 +176,40 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             t.slack = true;
             const size_t row_bytes = size_t(t.x1 - t.x0) * 3;
             for (int64_t y = t.y0; y < t.y1; ++y) std::memcpy(origin + size_t(y - t.y0) * kTileStride, bg_row, row_bytes);
-            for (uint32_t k = bins.start[tile]; k < bins.start[tile + 1]; ++k) {
+            const uint32_t first = bins.start[tile], end = bins.start[tile + 1];
+            auto is_dense = [&](const PlacedSpans& p) { return dense && p.dense && dense_fits(p, t.x0); };
+
+            // Backwards: the visible columns of every culled stroke's rows (ranges: one slot of
+            // 2 * kTileH bytes per such stroke, the last stroke's first), then its core.
+            cull.clear();
+            size_t slots = 0;
+            for (uint32_t k = end; k-- > first;) {
+                const PlacedSpans& p = bins.list[k].spans;
+                if (!p.extent) continue;  // drawn whole from its inverse map or spans; marks nothing
+                const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy);
+                const int64_t j1 = std::max(j0, std::min<int64_t>(p.h, t.y1 - p.oy));
+                const int64_t dx = int64_t(p.ox) - t.x0, r0 = p.oy + j0 - t.y0;
+                if (!is_dense(p)) {
+                    if (ranges.size() < (slots + 1) * 2 * kTileH) ranges.resize((slots + 1) * 2 * kTileH);
+                    cull_visible(cull, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, t.x1 - t.x0, &ranges[slots++ * 2 * kTileH]);
+                }
+                if (p.c.a == 255) cull_mark(cull, p.core, p.core_words, p.h, uint32_t(j0), uint32_t(j1), dx, r0);
+            }
+
+            for (uint32_t k = first; k < end; ++k) {
                 const Entry& e = bins.list[k];
-                if (e.spans.dense && dense_fits(e.spans, t.x0)) {
+                if (is_dense(e.spans)) {
                     const int64_t j0 = std::max<int64_t>(0, t.y0 - e.spans.oy);
                     const int64_t j1 = std::min<int64_t>(e.spans.h, t.y1 - e.spans.oy);
-                    if (blend_dense(origin + (e.spans.oy + j0 - t.y0) * int64_t(kTileStride) + 3 * (e.spans.ox - t.x0),
-                                    kTileStride, e.spans, uint32_t(j0), uint32_t(std::max(j0, j1))))
-                        continue;
+                    blend_dense(origin + (e.spans.oy + j0 - t.y0) * int64_t(kTileStride) + 3 * (e.spans.ox - t.x0),
+                                kTileStride, e.spans, uint32_t(j0), uint32_t(std::max(j0, j1)));
+                } else if (e.spans.extent) {
+                    blend_spans_cols(t, e.spans, &ranges[--slots * 2 * kTileH]);
+                } else if (e.spans.rows) {
+                    blend_spans(t, e.spans);
+                } else {
+                    draw_into(t, strokes[e.index]);
                 }
-                if (e.spans.rows) blend_spans(t, e.spans);
-                else draw_into(t, strokes[e.index]);
             }
             for (int64_t y = t.y0; y < t.y1; ++y)
                 std::memcpy(canvas.row(uint32_t(y)) + 3 * t.x0, origin + size_t(y - t.y0) * kTileStride, row_bytes);

@@ -1,0 +1,181 @@
+// Occlusion bits of a render tile (raster_cull.hpp): a scalar version and an AVX-512 one that
+// handles eight rows a step (the bits are stored word-column-major for that). Both give the
+// same bits and columns; tests/format/render_cull_test.cpp compares them on random masks.
+#include "raster_cull.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#if defined(__x86_64__) || defined(_M_X64)
+#include <immintrin.h>
+#define SPT_CULL_X86 1
+#endif
+
+namespace spt::raster {
+namespace {
+
+constexpr int64_t kBias = CullBits::kBias;
+constexpr int64_t kSpanBits = 64 * int64_t(CullBits::kWordCols);
+
+// Where word column k of a mask placed at tile column dx lands: bit position q of the rows.
+// False when none of its bits falls inside the word columns.
+inline bool landing(int64_t dx, uint32_t k, int64_t& q) {
+    q = dx + kBias + 64 * int64_t(k);
+    return q > -64 && q < kSpanBits;
+}
+
+// Bits of columns [a, b) (0 <= a, b <= 128) that fall in the 64 columns starting at base.
+inline uint64_t range_word(int64_t a, int64_t b, int64_t base) {
+    const int64_t lo = std::clamp<int64_t>(a - base, 0, 64), hi = std::clamp<int64_t>(b - base, 0, 64);
+    return hi > lo ? (~uint64_t(0) >> (64 - (hi - lo))) << lo : 0;
+}
+
+void mark_scalar(CullBits& bits, const uint64_t* core, uint32_t words, uint32_t rows, uint32_t j0, uint32_t j1,
+                 int64_t dx, int64_t r0) {
+    const uint32_t n = j1 - j0;
+    for (uint32_t k = 0; k < words; ++k) {
+        int64_t q;
+        if (!landing(dx, k, q)) continue;
+        const uint64_t* c = core + size_t(k) * rows + j0;
+        if (q < 0) {
+            for (uint32_t j = 0; j < n; ++j) bits.w[0][r0 + j] |= c[j] >> -q;
+            continue;
+        }
+        const int64_t wi = q >> 6, sh = q & 63;
+        for (uint32_t j = 0; j < n; ++j) bits.w[wi][r0 + j] |= c[j] << sh;
+        if (sh && wi + 1 < int64_t(CullBits::kWordCols))
+            for (uint32_t j = 0; j < n; ++j) bits.w[wi + 1][r0 + j] |= c[j] >> (64 - sh);
+    }
+}
+
+void visible_scalar(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx, int64_t r0,
+                    int64_t width, uint8_t* cols) {
+    for (uint32_t j = j0; j < j1; ++j, ++r0, cols += 2) {
+        const int64_t xs = std::max<int64_t>(0, int64_t(extent[j] & 0xFFFF) + dx);
+        const int64_t xe = std::min<int64_t>(width, int64_t(extent[j] >> 16) + dx);
+        const uint64_t v1 = range_word(xs, xe, 0) & ~bits.w[1][r0];
+        const uint64_t v2 = range_word(xs, xe, 64) & ~bits.w[2][r0];
+        if ((v1 | v2) == 0) {
+            cols[0] = cols[1] = 0;
+            continue;
+        }
+        cols[0] = uint8_t(v1 ? __builtin_ctzll(v1) : 64 + __builtin_ctzll(v2));
+        cols[1] = uint8_t(v2 ? 128 - __builtin_clzll(v2) : 64 - __builtin_clzll(v1));
+    }
+}
+
+#ifdef SPT_CULL_X86
+// GCC 12 warns that the _mm512_undefined_epi32() inside several AVX-512 intrinsics "may be
+// used uninitialized"; it is the intrinsics' own don't-care operand.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#define SPT_CULL_TARGET __attribute__((target("avx512f,avx512bw,avx512cd,avx512vl")))
+
+SPT_CULL_TARGET inline __mmask8 rows_mask(uint32_t left) { return left >= 8 ? __mmask8(0xFF) : __mmask8((1u << left) - 1); }
+
+// OR of src << sh (sh < 0: >> -sh; shifts of 64 or more give 0) into n rows of dst.
+SPT_CULL_TARGET inline void or_shifted(uint64_t* dst, const uint64_t* src, uint32_t n, int64_t sh) {
+    const __m128i left = _mm_cvtsi64_si128(sh > 0 ? sh : 0), right = _mm_cvtsi64_si128(sh < 0 ? -sh : 0);
+    for (uint32_t j = 0; j < n; j += 8) {
+        const __mmask8 m = rows_mask(n - j);
+        const __m512i v = _mm512_srl_epi64(_mm512_sll_epi64(_mm512_maskz_loadu_epi64(m, src + j), left), right);
+        _mm512_mask_storeu_epi64(dst + j, m, _mm512_or_si512(_mm512_maskz_loadu_epi64(m, dst + j), v));
+    }
+}
+
+SPT_CULL_TARGET void mark_avx512(CullBits& bits, const uint64_t* core, uint32_t words, uint32_t rows, uint32_t j0,
+                                 uint32_t j1, int64_t dx, int64_t r0) {
+    const uint32_t n = j1 - j0;
+    for (uint32_t k = 0; k < words; ++k) {
+        int64_t q;
+        if (!landing(dx, k, q)) continue;
+        const uint64_t* c = core + size_t(k) * rows + j0;
+        if (q < 0) {
+            or_shifted(&bits.w[0][r0], c, n, q);
+            continue;
+        }
+        const int64_t wi = q >> 6, sh = q & 63;
+        or_shifted(&bits.w[wi][r0], c, n, sh);
+        if (sh && wi + 1 < int64_t(CullBits::kWordCols)) or_shifted(&bits.w[wi + 1][r0], c, n, sh - 64);
+    }
+}
+
+// The bits of columns [a, b) within one word, a and b already clamped to [0, 64] (an empty
+// range shifts by 64, which gives 0).
+SPT_CULL_TARGET inline __m512i word_mask(__m512i a, __m512i b) {
+    const __m512i len = _mm512_max_epi64(_mm512_sub_epi64(b, a), _mm512_setzero_si512());
+    return _mm512_sllv_epi64(_mm512_srlv_epi64(_mm512_set1_epi64(-1), _mm512_sub_epi64(_mm512_set1_epi64(64), len)), a);
+}
+
+SPT_CULL_TARGET void visible_avx512(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx,
+                                    int64_t r0, int64_t width, uint8_t* cols) {
+    const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64);
+    const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width), low16 = _mm512_set1_epi64(0xFFFF);
+    const uint32_t n = j1 - j0;
+    for (uint32_t j = 0; j < n; j += 8) {
+        const __mmask8 m = rows_mask(n - j);
+        const __m512i e = _mm512_cvtepu32_epi64(_mm256_maskz_loadu_epi32(m, extent + j0 + j));
+        const __m512i xs = _mm512_max_epi64(_mm512_add_epi64(_mm512_and_si512(e, low16), vdx), zero);
+        const __m512i xe = _mm512_min_epi64(_mm512_add_epi64(_mm512_srli_epi64(e, 16), vdx), vw);
+        const __m512i m1 = word_mask(_mm512_min_epi64(xs, k64), _mm512_min_epi64(_mm512_max_epi64(xe, zero), k64));
+        const __m512i xs2 = _mm512_sub_epi64(xs, k64), xe2 = _mm512_sub_epi64(xe, k64);
+        const __m512i m2 = word_mask(_mm512_min_epi64(_mm512_max_epi64(xs2, zero), k64),
+                                     _mm512_min_epi64(_mm512_max_epi64(xe2, zero), k64));
+        const __m512i v1 = _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[1][r0 + j]), m1);
+        const __m512i v2 = _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[2][r0 + j]), m2);
+        const __mmask8 k1 = _mm512_test_epi64_mask(v1, v1), k2 = _mm512_test_epi64_mask(v2, v2);
+        // Lowest set bit: 63 - lzcnt(v & -v); highest: 63 - lzcnt(v).
+        const __m512i lz1 = _mm512_lzcnt_epi64(_mm512_and_si512(v1, _mm512_sub_epi64(zero, v1)));
+        const __m512i lz2 = _mm512_lzcnt_epi64(_mm512_and_si512(v2, _mm512_sub_epi64(zero, v2)));
+        __m512i lo = _mm512_mask_mov_epi64(zero, k2, _mm512_sub_epi64(_mm512_set1_epi64(127), lz2));
+        lo = _mm512_mask_mov_epi64(lo, k1, _mm512_sub_epi64(_mm512_set1_epi64(63), lz1));
+        __m512i hi = _mm512_mask_mov_epi64(zero, k1, _mm512_sub_epi64(k64, _mm512_lzcnt_epi64(v1)));
+        hi = _mm512_mask_mov_epi64(hi, k2, _mm512_sub_epi64(_mm512_set1_epi64(128), _mm512_lzcnt_epi64(v2)));
+        _mm512_mask_cvtepi64_storeu_epi16(cols + 2 * j, m, _mm512_or_si512(lo, _mm512_slli_epi64(hi, 8)));
+    }
+}
+#undef SPT_CULL_TARGET
+#pragma GCC diagnostic pop
+#endif
+
+using MarkFn = void (*)(CullBits&, const uint64_t*, uint32_t, uint32_t, uint32_t, uint32_t, int64_t, int64_t);
+using VisibleFn = void (*)(const CullBits&, const uint32_t*, uint32_t, uint32_t, int64_t, int64_t, int64_t, uint8_t*);
+
+struct CullKernels {
+    MarkFn mark;
+    VisibleFn visible;
+};
+
+CullKernels pick_cull() {
+#ifdef SPT_CULL_X86
+    const BlendIsa isa = forced_span_isa();
+    if ((isa == BlendIsa::Best || isa == BlendIsa::Avx512) && blend_isa_available(BlendIsa::Avx512) &&
+        __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512vl"))
+        return {mark_avx512, visible_avx512};
+#endif
+    return {mark_scalar, visible_scalar};
+}
+
+const CullKernels& cull_kernels() {
+    static const CullKernels best = pick_cull();
+    if (forced_span_isa() == BlendIsa::Best) return best;
+    thread_local CullKernels forced;
+    forced = pick_cull();
+    return forced;
+}
+
+}  // namespace
+
+void CullBits::clear() { std::memset(w, 0, sizeof w); }
+
+void cull_mark(CullBits& bits, const uint64_t* core, uint32_t words, uint32_t rows, uint32_t j0, uint32_t j1,
+               int64_t dx, int64_t r0) {
+    if (j1 > j0) cull_kernels().mark(bits, core, words, rows, j0, j1, dx, r0);
+}
+
+void cull_visible(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx, int64_t r0,
+                  int64_t width, uint8_t* cols) {
+    if (j1 > j0) cull_kernels().visible(bits, extent, j0, j1, dx, r0, width, cols);
+}
+
+}  // namespace spt::raster
