@@ -64,6 +64,51 @@ void visible_scalar(const CullBits& bits, const uint32_t* extent, uint32_t j0, u
     }
 }
 
+// Bit i set when row j0 + i (j1 - j0 <= 64) has a pixel in tile columns [0, width) not yet hidden.
+uint64_t rows_scalar(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx, int64_t r0,
+                     int64_t width) {
+    uint64_t out = 0;
+    for (uint32_t j = j0; j < j1; ++j, ++r0) {
+        const int64_t xs = std::max<int64_t>(0, int64_t(extent[j] & 0xFFFF) + dx);
+        const int64_t xe = std::min<int64_t>(width, int64_t(extent[j] >> 16) + dx);
+        if ((range_word(xs, xe, 0) & ~bits.w[1][r0]) | (range_word(xs, xe, 64) & ~bits.w[2][r0]))
+            out |= uint64_t(1) << (j - j0);
+    }
+    return out;
+}
+
+// The tile loop of cull_tile, expanded per ISA so that the kernels inline.
+#define SPT_CULL_TILE_LOOP(MARK, VISIBLE, ROWS)                                                                 \
+    bits.clear();                                                                                               \
+    if (plan.rows.size() < 2 * size_t(n)) plan.rows.resize(2 * size_t(n));                                      \
+    size_t slots = 0;                                                                                           \
+    const int64_t width = t.x1 - t.x0;                                                                          \
+    for (uint32_t i = n; i-- > 0;) {                                                                            \
+        const PlacedSpans& p = list[i];                                                                         \
+        if (!p.extent) continue;                                                                                \
+        const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy);                                                   \
+        const int64_t j1 = std::max(j0, std::min<int64_t>(p.h, t.y1 - p.oy));                                   \
+        const int64_t dx = int64_t(p.ox) - t.x0, r0 = p.oy + j0 - t.y0;                                         \
+        if (cull_dense(p, t)) {                                                                                 \
+            const uint64_t vis = ROWS(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width);               \
+            plan.rows[2 * size_t(i)] = vis ? uint32_t(j0 + __builtin_ctzll(vis)) : 0;                           \
+            plan.rows[2 * size_t(i) + 1] = vis ? uint32_t(j0 + 64 - __builtin_clzll(vis)) : 0;                  \
+        } else {                                                                                                \
+            if (plan.cols.size() < (slots + 1) * 2 * CullBits::kRows)                                           \
+                plan.cols.resize((slots + 1) * 2 * CullBits::kRows);                                            \
+            if (j1 > j0)                                                                                        \
+                VISIBLE(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width,                              \
+                        &plan.cols[slots * 2 * CullBits::kRows]);                                               \
+            ++slots;                                                                                            \
+        }                                                                                                       \
+        if (p.c.a == 255 && j1 > j0) MARK(bits, p.core, p.core_words, p.h, uint32_t(j0), uint32_t(j1), dx, r0); \
+    }                                                                                                           \
+    plan.slots = slots;
+
+void tile_scalar(CullBits& bits, const PlacedSpans* list, uint32_t n, const CullTile& t, CullPlan& plan) {
+    SPT_CULL_TILE_LOOP(mark_scalar, visible_scalar, rows_scalar)
+}
+
 #ifdef SPT_CULL_X86
 // GCC 12 warns that the _mm512_undefined_epi32() inside several AVX-512 intrinsics "may be
 // used uninitialized"; it is the intrinsics' own don't-care operand.
@@ -83,7 +128,19 @@ SPT_CULL_TARGET inline void or_shifted(uint64_t* dst, const uint64_t* src, uint3
     }
 }
 
-SPT_CULL_TARGET void mark_avx512(CullBits& bits, const uint64_t* core, uint32_t words, uint32_t rows, uint32_t j0,
+// The same for 0 <= sh < 64 into two adjacent word columns: src << sh into lo, the bits
+// shifted out (src >> (64 - sh)) into hi; one load of src for both.
+SPT_CULL_TARGET inline void or_shifted_pair(uint64_t* lo, uint64_t* hi, const uint64_t* src, uint32_t n, int64_t sh) {
+    const __m128i left = _mm_cvtsi64_si128(sh), right = _mm_cvtsi64_si128(64 - sh);
+    for (uint32_t j = 0; j < n; j += 8) {
+        const __mmask8 m = rows_mask(n - j);
+        const __m512i v = _mm512_maskz_loadu_epi64(m, src + j);
+        _mm512_mask_storeu_epi64(lo + j, m, _mm512_or_si512(_mm512_maskz_loadu_epi64(m, lo + j), _mm512_sll_epi64(v, left)));
+        _mm512_mask_storeu_epi64(hi + j, m, _mm512_or_si512(_mm512_maskz_loadu_epi64(m, hi + j), _mm512_srl_epi64(v, right)));
+    }
+}
+
+SPT_CULL_TARGET inline void mark_avx512(CullBits& bits, const uint64_t* core, uint32_t words, uint32_t rows, uint32_t j0,
                                  uint32_t j1, int64_t dx, int64_t r0) {
     const uint32_t n = j1 - j0;
     for (uint32_t k = 0; k < words; ++k) {
@@ -95,8 +152,10 @@ SPT_CULL_TARGET void mark_avx512(CullBits& bits, const uint64_t* core, uint32_t 
             continue;
         }
         const int64_t wi = q >> 6, sh = q & 63;
-        or_shifted(&bits.w[wi][r0], c, n, sh);
-        if (sh && wi + 1 < int64_t(CullBits::kWordCols)) or_shifted(&bits.w[wi + 1][r0], c, n, sh - 64);
+        if (wi + 1 < int64_t(CullBits::kWordCols))
+            or_shifted_pair(&bits.w[wi][r0], &bits.w[wi + 1][r0], c, n, sh);
+        else
+            or_shifted(&bits.w[wi][r0], c, n, sh);
     }
 }
 
@@ -107,7 +166,7 @@ SPT_CULL_TARGET inline __m512i word_mask(__m512i a, __m512i b) {
     return _mm512_sllv_epi64(_mm512_srlv_epi64(_mm512_set1_epi64(-1), _mm512_sub_epi64(_mm512_set1_epi64(64), len)), a);
 }
 
-SPT_CULL_TARGET void visible_avx512(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx,
+SPT_CULL_TARGET inline void visible_avx512(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx,
                                     int64_t r0, int64_t width, uint8_t* cols) {
     const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64);
     const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width), low16 = _mm512_set1_epi64(0xFFFF);
@@ -134,16 +193,44 @@ SPT_CULL_TARGET void visible_avx512(const CullBits& bits, const uint32_t* extent
         _mm512_mask_cvtepi64_storeu_epi16(cols + 2 * j, m, _mm512_or_si512(lo, _mm512_slli_epi64(hi, 8)));
     }
 }
+SPT_CULL_TARGET inline uint64_t rows_avx512(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1,
+                                            int64_t dx, int64_t r0, int64_t width) {
+    const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64);
+    const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width), low16 = _mm512_set1_epi64(0xFFFF);
+    uint64_t out = 0;
+    const uint32_t n = j1 - j0;
+    for (uint32_t j = 0; j < n; j += 8) {
+        const __mmask8 m = rows_mask(n - j);
+        const __m512i e = _mm512_cvtepu32_epi64(_mm256_maskz_loadu_epi32(m, extent + j0 + j));
+        const __m512i xs = _mm512_max_epi64(_mm512_add_epi64(_mm512_and_si512(e, low16), vdx), zero);
+        const __m512i xe = _mm512_min_epi64(_mm512_add_epi64(_mm512_srli_epi64(e, 16), vdx), vw);
+        const __m512i m1 = word_mask(_mm512_min_epi64(xs, k64), _mm512_min_epi64(_mm512_max_epi64(xe, zero), k64));
+        const __m512i m2 = word_mask(_mm512_min_epi64(_mm512_max_epi64(_mm512_sub_epi64(xs, k64), zero), k64),
+                                     _mm512_min_epi64(_mm512_max_epi64(_mm512_sub_epi64(xe, k64), zero), k64));
+        const __m512i v = _mm512_or_si512(_mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[1][r0 + j]), m1),
+                                          _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[2][r0 + j]), m2));
+        out |= uint64_t(_mm512_mask_test_epi64_mask(m, v, v)) << j;
+    }
+    return out;
+}
+
+SPT_CULL_TARGET void tile_avx512(CullBits& bits, const PlacedSpans* list, uint32_t n, const CullTile& t,
+                                 CullPlan& plan) {
+    SPT_CULL_TILE_LOOP(mark_avx512, visible_avx512, rows_avx512)
+}
 #undef SPT_CULL_TARGET
 #pragma GCC diagnostic pop
 #endif
+#undef SPT_CULL_TILE_LOOP
 
 using MarkFn = void (*)(CullBits&, const uint64_t*, uint32_t, uint32_t, uint32_t, uint32_t, int64_t, int64_t);
 using VisibleFn = void (*)(const CullBits&, const uint32_t*, uint32_t, uint32_t, int64_t, int64_t, int64_t, uint8_t*);
+using TileFn = void (*)(CullBits&, const PlacedSpans*, uint32_t, const CullTile&, CullPlan&);
 
 struct CullKernels {
     MarkFn mark;
     VisibleFn visible;
+    TileFn tile;
 };
 
 CullKernels pick_cull() {
@@ -151,9 +238,9 @@ CullKernels pick_cull() {
     const BlendIsa isa = forced_span_isa();
     if ((isa == BlendIsa::Best || isa == BlendIsa::Avx512) && blend_isa_available(BlendIsa::Avx512) &&
         __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512vl"))
-        return {mark_avx512, visible_avx512};
+        return {mark_avx512, visible_avx512, tile_avx512};
 #endif
-    return {mark_scalar, visible_scalar};
+    return {mark_scalar, visible_scalar, tile_scalar};
 }
 
 const CullKernels& cull_kernels() {
@@ -176,6 +263,10 @@ void cull_mark(CullBits& bits, const uint64_t* core, uint32_t words, uint32_t ro
 void cull_visible(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx, int64_t r0,
                   int64_t width, uint8_t* cols) {
     if (j1 > j0) cull_kernels().visible(bits, extent, j0, j1, dx, r0, width, cols);
+}
+
+void cull_tile(CullBits& bits, const PlacedSpans* list, uint32_t n, const CullTile& t, CullPlan& plan) {
+    cull_kernels().tile(bits, list, n, t, plan);
 }
 
 }  // namespace spt::raster

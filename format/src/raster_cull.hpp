@@ -38,4 +38,35 @@ void cull_mark(CullBits& bits, const uint64_t* core, uint32_t words, uint32_t ro
 void cull_visible(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx, int64_t r0,
                   int64_t width, uint8_t* cols);
 
+// One render tile and how its strokes are drawn (render_tiles.cpp).
+struct CullTile {
+    int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // canvas pixels [x0, x1) x [y0, y1)
+    bool dense = false;                      // blend_dense draws on this ISA
+    // A dense box is drawn whole when its rows lie in the tile buffer: from dense_lo columns
+    // left of x0 up to 3 * x0 + dense_hi3 bytes.
+    int64_t dense_lo = 0, dense_hi3 = 0;
+};
+
+// True when the tile draws p from its dense box (raster::blend_dense).
+inline bool cull_dense(const PlacedSpans& p, const CullTile& t) {
+    const int64_t dx = int64_t(p.ox) - t.x0;
+    return t.dense && p.dense && dx >= t.dense_lo && 3 * dx + int64_t(p.dense_steps * kDenseStep) <= t.dense_hi3;
+}
+
+// What a tile's backwards pass found, for its forward (drawing) pass.
+struct CullPlan {
+    // Per entry: the rows [rows[2i], rows[2i+1]) of a dense entry that hold a visible pixel
+    // (mask rows, inside the tile's rows; empty when none does).
+    std::vector<uint32_t> rows;
+    // Per span-culled entry (an entry with an extent that is not dense), the last one first:
+    // 2 * CullBits::kRows bytes of visible columns (cull_visible) of its rows inside the tile.
+    std::vector<uint8_t> cols;
+    size_t slots = 0;  // span-culled entries in cols
+};
+
+// The backwards pass over a tile's entries list[0..n): bits are cleared, then for each entry
+// with a core (PlacedSpans::extent set), last to first: its visible rows (dense) or columns
+// (otherwise) into plan, then, when its alpha is 255, its core into bits.
+void cull_tile(CullBits& bits, const PlacedSpans* list, uint32_t n, const CullTile& t, CullPlan& plan);
+
 }  // namespace spt::raster

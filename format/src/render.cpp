@@ -30,7 +30,7 @@ using namespace raster;
 
 namespace {
 
-constexpr int64_t kMaxCoord = int64_t(1) << 24;   // SPEC 4 value ranges
+constexpr int64_t kMaxCoord = RendererImpl::kMaxCoord;  // SPEC 4 value ranges
 constexpr int64_t kMaxMatrix = int64_t(1) << 16;
 constexpr uint32_t kMaxCurveWidth = 1u << 16;
 constexpr uint64_t kMaxMaskPixels = uint64_t(1) << 26;  // stroke_mask() refuses larger boxes

@@ -26,6 +26,12 @@ public:
 
     // Range and reference checks of one stroke (SPEC 8.7).
     Status check(const Stroke& s) const;
+    // check(s) of a stamp, without the message: true when it passes.
+    bool stamp_valid(const StampStroke& t) const {
+        return t.set < header_.sets.size() && t.tmpl < templates_.size() && t.orient < header_.orientations.size() &&
+               t.x >= -kMaxCoord && t.x <= kMaxCoord && t.y >= -kMaxCoord && t.y <= kMaxCoord;
+    }
+    static constexpr int64_t kMaxCoord = int64_t(1) << 24;  // SPEC 4 value ranges of positions
     // The span footprint of a stamp for drawing, built on first use; nullptr when it does not
     // fit the cache budget (the stamp is then drawn through its inverse map, same pixels).
     const raster::SpanMask* spans(uint8_t set, uint8_t tmpl, uint8_t orient) const;

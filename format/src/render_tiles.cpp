@@ -35,32 +35,23 @@ static_assert(3 * kApronX >= int64_t(kSpanPad), "clipped spans may run kSpanPad 
 static_assert(kTileW == CullBits::kTileCols && kTileH == CullBits::kRows && kApronX <= CullBits::kBias,
               "the culling bits cover a tile and the part of its apron that narrow strokes reach");
 
-// True when every row of p's dense box lies in the buffer row of a tile starting at canvas
-// column x0.
-bool dense_fits(const PlacedSpans& p, int64_t x0) {
-    const int64_t dx = int64_t(p.ox) - x0;
-    return dx >= -kApronX && 3 * dx + int64_t(p.dense_steps * kDenseStep) <= 3 * (kTileW + kApronX);
-}
-
-// One stroke prepared for the tiles: a stamp with a cached footprint is drawn from the record
-// alone (spans.rows set); anything else through draw_into(strokes[index]). Records are copied
-// into every tile's list, so a tile reads its strokes sequentially.
-struct Entry {
-    PlacedSpans spans;
-    uint32_t index = 0;
-};
-
 // Occlusion culling (raster_cull.hpp). Before drawing, a tile walks its strokes backwards;
 // each stroke drawn span by span (the big, coarse ones: painters put them first and cover
 // most of their pixels) gets, per row, the columns from its first to its last pixel that no
 // later stroke covers opaquely; every opaque stroke then marks its core. Narrow strokes are
 // not culled (a row of a dense box is blended whole, about as cheap as testing it) but mark.
 // Only pixels that a later stroke overwrites completely are skipped: the bytes are the same.
+// Every stroke prepared for the tiles: a stamp with a cached footprint is drawn from its
+// record alone (items[k].rows set); anything else through draw_into(strokes[stroke[k]]).
+// Records are copied into every tile's list, so that a tile reads its strokes sequentially
+// (twice: culling, then drawing); a list of item numbers measured slower.
 struct Bins {
-    std::vector<Entry> items;
-    std::vector<uint16_t> range;  // per item: first and last tile column, first and last tile row
-    std::vector<uint32_t> start;  // tiles + 1 offsets into list
-    std::vector<Entry> list;      // entries per tile, in drawing order
+    std::vector<PlacedSpans> items;
+    std::vector<uint32_t> stroke;  // per item: its index in the stroke list
+    std::vector<uint16_t> range;   // per item: first and last tile column, first and last tile row
+    std::vector<uint32_t> start;   // tiles + 1 offsets into list
+    std::vector<PlacedSpans> list;  // the items of each tile, in drawing order
+    std::vector<uint32_t> list_stroke;  // and their strokes' indices
 };
 
 Bins& scratch_bins() {
@@ -87,46 +78,56 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     // them one by one would have done, and the error names it.
     Bins& bins = scratch_bins();
     bins.items.clear();
+    bins.stroke.clear();
     bins.range.clear();
+    auto add = [&](const PlacedSpans& p, size_t i, int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
+        x0 = std::max<int64_t>(x0, 0); x1 = std::min<int64_t>(x1, W - 1);
+        y0 = std::max<int64_t>(y0, 0); y1 = std::min<int64_t>(y1, H - 1);
+        if (x0 > x1 || y0 > y1) return;
+        bins.items.push_back(p);
+        bins.stroke.push_back(uint32_t(i));
+        bins.range.insert(bins.range.end(), {uint16_t(x0 / kTileW), uint16_t(x1 / kTileW), uint16_t(y0 / kTileH),
+                                             uint16_t(y1 / kTileH)});
+    };
     Status error;
     for (size_t i = 0; i < strokes.size(); ++i) {
         const Stroke& s = strokes[i];
+        PlacedSpans p;
+        // The common case first: a valid stamp with a cached footprint (its box is the mask's).
+        if (s.kind == StrokeKind::Stamp && stamp_valid(s.stamp)) {
+            const StampStroke& st = s.stamp;
+            if (const SpanMask* f = spans(st.set, st.tmpl, st.orient)) {
+                if (st.color.a == 0 || f->rows.empty()) continue;
+                p.c = st.color;
+                p.rows = f->rows.data();
+                p.cov3 = f->cov3.data();
+                p.h = uint32_t(f->rows.size());
+                p.ox = int32_t(stamp_pixel(st.x) + f->x0);
+                p.oy = int32_t(stamp_pixel(st.y) + f->y0);
+                if (!f->extent.empty()) {
+                    p.core = f->core.data();
+                    p.extent = f->extent.data();
+                    p.core_words = f->core_words;
+                }
+                if (f->dense_steps) {
+                    p.dense = f->dense.data();
+                    p.dense_steps = f->dense_steps;
+                }
+                add(p, i, p.ox, p.oy, int64_t(p.ox) + f->w - 1, int64_t(p.oy) + p.h - 1);
+                continue;
+            }
+        }
         if (Status st = check(s); !st) {
             Error e = st.error();
             e.message = "stroke " + std::to_string(i) + ": " + e.message;
             error = e;
             break;
         }
-        Entry it;
-        it.index = uint32_t(i);
-        it.spans.c = s.color();
-        if (it.spans.c.a == 0) continue;
+        p.c = s.color();
+        if (p.c.a == 0) continue;
         int64_t x0, y0, x1, y1;
         stroke_box(s, x0, y0, x1, y1);
-        x0 = std::max<int64_t>(x0, 0); x1 = std::min<int64_t>(x1, W - 1);
-        y0 = std::max<int64_t>(y0, 0); y1 = std::min<int64_t>(y1, H - 1);
-        if (x0 > x1 || y0 > y1) continue;
-        if (s.kind == StrokeKind::Stamp) {
-            if (const SpanMask* f = spans(s.stamp.set, s.stamp.tmpl, s.stamp.orient)) {
-                it.spans.rows = f->rows.data();
-                it.spans.cov3 = f->cov3.data();
-                it.spans.h = uint32_t(f->rows.size());
-                it.spans.ox = int32_t(stamp_pixel(s.stamp.x) + f->x0);
-                it.spans.oy = int32_t(stamp_pixel(s.stamp.y) + f->y0);
-                if (!f->extent.empty()) {
-                    it.spans.core = f->core.data();
-                    it.spans.extent = f->extent.data();
-                    it.spans.core_words = f->core_words;
-                }
-                if (f->dense_steps) {
-                    it.spans.dense = f->dense.data();
-                    it.spans.dense_steps = f->dense_steps;
-                }
-            }
-        }
-        bins.items.push_back(it);
-        bins.range.insert(bins.range.end(), {uint16_t(x0 / kTileW), uint16_t(x1 / kTileW), uint16_t(y0 / kTileH),
-                                             uint16_t(y1 / kTileH)});
+        add(p, i, x0, y0, x1, y1);
     }
 
     // Counting sort of (tile, entry) pairs: one flat list, drawing order kept within a tile.
@@ -139,12 +140,17 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     }
     for (size_t t = 0; t < tiles; ++t) bins.start[t + 1] += bins.start[t];
     bins.list.resize(bins.start[tiles]);
+    bins.list_stroke.resize(bins.start[tiles]);
     {
         std::vector<uint32_t> fill(bins.start.begin(), bins.start.end() - 1);
         for (size_t k = 0; k < n; ++k) {
             const uint16_t* r = &bins.range[4 * k];
             for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
-                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) bins.list[fill[size_t(ty) * size_t(tiles_x) + tx]++] = bins.items[k];
+                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) {
+                    const uint32_t at = fill[size_t(ty) * size_t(tiles_x) + tx]++;
+                    bins.list[at] = bins.items[k];
+                    bins.list_stroke[at] = bins.stroke[k];
+                }
         }
     }
 
@@ -160,7 +166,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     auto worker = [&]() {
         thread_local std::vector<uint8_t> buf;  // zeroed once; the apron then holds leftovers
         thread_local CullBits cull;
-        thread_local std::vector<uint8_t> ranges;
+        thread_local CullPlan plan;
         buf.resize(kTileStride * size_t(kTileH));
         uint8_t* const origin = buf.data() + 3 * size_t(kApronX);
         for (;;) {
@@ -176,39 +182,28 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             t.slack = true;
             const size_t row_bytes = size_t(t.x1 - t.x0) * 3;
             for (int64_t y = t.y0; y < t.y1; ++y) std::memcpy(origin + size_t(y - t.y0) * kTileStride, bg_row, row_bytes);
-            const uint32_t first = bins.start[tile], end = bins.start[tile + 1];
-            auto is_dense = [&](const PlacedSpans& p) { return dense && p.dense && dense_fits(p, t.x0); };
+            const uint32_t first = bins.start[tile], count = bins.start[tile + 1] - first;
+            const PlacedSpans* list = &bins.list[first];
+            CullTile ct;
+            ct.x0 = t.x0; ct.y0 = t.y0; ct.x1 = t.x1; ct.y1 = t.y1;
+            ct.dense = dense;
+            ct.dense_lo = -kApronX;
+            ct.dense_hi3 = 3 * (kTileW + kApronX);
 
-            // Backwards: the visible columns of every culled stroke's rows (ranges: one slot of
-            // 2 * kTileH bytes per such stroke, the last stroke's first), then its core.
-            cull.clear();
-            size_t slots = 0;
-            for (uint32_t k = end; k-- > first;) {
-                const PlacedSpans& p = bins.list[k].spans;
-                if (!p.extent) continue;  // drawn whole from its inverse map or spans; marks nothing
-                const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy);
-                const int64_t j1 = std::max(j0, std::min<int64_t>(p.h, t.y1 - p.oy));
-                const int64_t dx = int64_t(p.ox) - t.x0, r0 = p.oy + j0 - t.y0;
-                if (!is_dense(p)) {
-                    if (ranges.size() < (slots + 1) * 2 * kTileH) ranges.resize((slots + 1) * 2 * kTileH);
-                    cull_visible(cull, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, t.x1 - t.x0, &ranges[slots++ * 2 * kTileH]);
-                }
-                if (p.c.a == 255) cull_mark(cull, p.core, p.core_words, p.h, uint32_t(j0), uint32_t(j1), dx, r0);
-            }
-
-            for (uint32_t k = first; k < end; ++k) {
-                const Entry& e = bins.list[k];
-                if (is_dense(e.spans)) {
-                    const int64_t j0 = std::max<int64_t>(0, t.y0 - e.spans.oy);
-                    const int64_t j1 = std::min<int64_t>(e.spans.h, t.y1 - e.spans.oy);
-                    blend_dense(origin + (e.spans.oy + j0 - t.y0) * int64_t(kTileStride) + 3 * (e.spans.ox - t.x0),
-                                kTileStride, e.spans, uint32_t(j0), uint32_t(std::max(j0, j1)));
-                } else if (e.spans.extent) {
-                    blend_spans_cols(t, e.spans, &ranges[--slots * 2 * kTileH]);
-                } else if (e.spans.rows) {
-                    blend_spans(t, e.spans);
+            cull_tile(cull, list, count, ct, plan);
+            size_t slots = plan.slots;  // span-culled entries: their columns are in plan.cols, last first
+            for (uint32_t i = 0; i < count; ++i) {
+                const PlacedSpans& p = list[i];
+                if (p.extent && cull_dense(p, ct)) {
+                    const uint32_t j0 = plan.rows[2 * size_t(i)], j1 = plan.rows[2 * size_t(i) + 1];
+                    blend_dense(origin + (p.oy + int64_t(j0) - t.y0) * int64_t(kTileStride) + 3 * (p.ox - t.x0), kTileStride,
+                                p, j0, std::max(j0, j1));
+                } else if (p.extent) {
+                    blend_spans_cols(t, p, &plan.cols[--slots * 2 * CullBits::kRows]);
+                } else if (p.rows) {
+                    blend_spans(t, p);
                 } else {
-                    draw_into(t, strokes[e.index]);
+                    draw_into(t, strokes[bins.list_stroke[first + i]]);
                 }
             }
             for (int64_t y = t.y0; y < t.y1; ++y)
