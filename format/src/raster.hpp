@@ -159,18 +159,19 @@ struct BlendTarget {
 };
 // A SpanMask placed on the canvas for one stroke: what the tile loop keeps per binned stroke,
 // so that it reads one small record rather than chasing pointers.
-struct PlacedSpans {
+struct alignas(64) PlacedSpans {  // one cache line: tiles copy these by the ten thousand
     const SpanRow* rows = nullptr;
     const uint8_t* cov3 = nullptr;
+    const uint8_t* dense = nullptr;    // the mask's dense box, if it has one
+    const uint64_t* core = nullptr;    // the mask's opaque core (SpanMask::core), or nullptr
+    const uint32_t* extent = nullptr;  // SpanMask::extent
     int32_t ox = 0, oy = 0;  // canvas position of column 0 / row 0
     uint32_t h = 0;          // rows
     Rgba8 c;
-    const uint8_t* dense = nullptr;  // the mask's dense box, if it has one
     uint32_t dense_steps = 0;
-    const uint64_t* core = nullptr;  // the mask's opaque core (SpanMask::core), or nullptr
-    const uint32_t* extent = nullptr;  // SpanMask::extent
     uint32_t core_words = 0;
 };
+static_assert(sizeof(PlacedSpans) == 64);
 // Composites p (SPEC 8.6), clipped to t.
 void blend_spans(const BlendTarget& t, const PlacedSpans& p);
 // Composites mask m with its column 0 / row 0 at canvas (ox, oy), clipped to t.
