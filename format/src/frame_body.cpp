@@ -16,12 +16,16 @@ Status decode_frame_body(FrameType type, Coding coding, const uint8_t* p, size_t
     out.type = type;
     out.removed.clear();
     out.motion = MotionField();
-    out.added.clear();
-    if (coding == Coding::Stored) SPT_TRY(decode_stored_body(type, p, n, ctx, out, split));
-    else if (coding == Coding::Range) SPT_TRY(decode_range_body(type, p, n, ctx, out, split));
-    else if (coding == Coding::Replay) SPT_TRY(decode_replay_body(type, p, n, ctx, out, split));
-    else return make_error(Code::Unsupported, ctx.where + ": coding " + std::to_string(int(coding)) + " is reserved", ctx.offset);
-    return check_frame(out, ctx.shape, ctx.limits, ctx.prev_live, Code::Corrupt, ctx.where, ctx.offset);
+    size_t checked = 0;
+    if (coding == Coding::Stored) {
+        SPT_TRY(decode_stored_body(type, p, n, ctx, out, split, &checked));  // reuses out.added's strokes
+    } else {
+        out.added.clear();
+        if (coding == Coding::Range) SPT_TRY(decode_range_body(type, p, n, ctx, out, split));
+        else if (coding == Coding::Replay) SPT_TRY(decode_replay_body(type, p, n, ctx, out, split));
+        else return make_error(Code::Unsupported, ctx.where + ": coding " + std::to_string(int(coding)) + " is reserved", ctx.offset);
+    }
+    return check_frame(out, ctx.shape, ctx.limits, ctx.prev_live, Code::Corrupt, ctx.where, ctx.offset, checked);
 }
 
 Status measure_frame_body(FrameType type, Coding coding, uint64_t body_size, const BodyPeek& peek,

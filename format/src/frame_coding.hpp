@@ -50,8 +50,11 @@ Status measure_frame_body(FrameType type, Coding coding, uint64_t body_size, con
 
 // Coding 0.
 void encode_stored_body(const Frame& f, std::vector<uint8_t>& out, BodySplit* split, FieldStats* stats);
+// Reuses the Strokes already in out.added (a player decodes frame after frame into one
+// Frame); sets *checked to the number of leading strokes it found valid (check_frame need
+// not check those again).
 Status decode_stored_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
-                          BodySplit* split);
+                          BodySplit* split, size_t* checked = nullptr);
 Status measure_stored_body(FrameType type, uint64_t body_size, const BodyPeek& peek, const DecodeContext& ctx,
                            BodySplit& split);
 

@@ -121,7 +121,7 @@ Status check_stroke(const Stroke& s, const StreamShape& sh, const Limits& lim, C
 }
 
 Status check_frame(const Frame& f, const StreamShape& sh, const Limits& lim, uint64_t prev_live,
-                   Code code, const std::string& where, uint64_t off) {
+                   Code code, const std::string& where, uint64_t off, size_t checked) {
     if (f.added.size() > lim.max_strokes_per_frame)
         return fail(Code::LimitExceeded, where, std::to_string(f.added.size()) + " strokes exceed the per-frame limit", off);
     if (f.type == FrameType::Key) {
@@ -149,11 +149,9 @@ Status check_frame(const Frame& f, const StreamShape& sh, const Limits& lim, uin
     // Stamps, most strokes of a painting, are checked inline: a Status per stroke costs more
     // than the comparisons.
     static const std::string kNone;
-    for (size_t i = 0; i < f.added.size(); ++i) {
+    for (size_t i = checked; i < f.added.size(); ++i) {
         const Stroke& s = f.added[i];
-        if (s.kind == StrokeKind::Stamp && s.stamp.set < sh.sets && s.stamp.tmpl < sh.templates &&
-            s.stamp.orient < sh.orientations && coord_ok(s.stamp.x) && coord_ok(s.stamp.y))
-            continue;
+        if (s.kind == StrokeKind::Stamp && stamp_ok(s.stamp, sh)) continue;
         if (!check_stroke(s, sh, lim, code, kNone, off).ok())
             return check_stroke(s, sh, lim, code, where + ", stroke " + std::to_string(i), off);
     }

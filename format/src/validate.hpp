@@ -43,9 +43,15 @@ Status check_stroke(const Stroke& s, const StreamShape& shape, const Limits& lim
 constexpr uint64_t kUnknownLive = ~uint64_t(0);
 
 // Checks a frame's removal list and motion field against the previous live list length and
-// the canvas, and its strokes. `prev_live` is ignored for key frames.
+// the canvas, and its strokes from index `checked` on (the caller vouches for the ones before).
+// `prev_live` is ignored for key frames.
 Status check_frame(const Frame& f, const StreamShape& shape, const Limits& lim, uint64_t prev_live,
-                   Code code, const std::string& where, uint64_t offset);
+                   Code code, const std::string& where, uint64_t offset, size_t checked = 0);
+// check_stroke(s, ...) of a stamp passes (the test alone, no message).
+inline bool stamp_ok(const StampStroke& t, const StreamShape& sh) {
+    return t.set < sh.sets && t.tmpl < sh.templates && t.orient < sh.orientations && t.x >= -kMaxCoord &&
+           t.x <= kMaxCoord && t.y >= -kMaxCoord && t.y <= kMaxCoord;
+}
 
 inline uint16_t blocks_for(uint32_t extent, uint32_t block) { return uint16_t((extent + block - 1) / block); }
 

@@ -62,6 +62,9 @@ void check_stream(const RandomStream& rs, uint64_t seed, Coding coding) {
         const Status st = rd.read_frame(i, reused);
         ASSERT_TRUE(st.ok()) << st.error().message;
         EXPECT_TRUE(same_frame(reused, rs.frames[i])) << "frame " << i << " into a reused Frame";
+        // A stamp decoded where a curve or polygon was keeps none of its points.
+        for (const Stroke& st : reused.added)
+            if (st.kind == StrokeKind::Stamp) EXPECT_TRUE(st.curve.points.empty() && st.polygon.points.empty());
     }
     // Reading from memory gives the same.
     const auto bytes = read_bytes(path);
