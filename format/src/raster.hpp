@@ -118,6 +118,7 @@ struct SpanRow {
 // pairs in the lane order of the kernel (raster_span.cpp: span_mask_make_dense).
 constexpr uint32_t kDenseStep = 64, kDenseMaxSteps = 2;
 struct SpanMask {
+    uint32_t id = 0;            // its number among a renderer's cached masks
     int32_t x0 = 0, y0 = 0;     // offset of column 0 / row 0 (from the stamp's centre pixel)
     uint32_t w = 0;             // columns: every span lies in [0, w)
     std::vector<SpanRow> rows;  // row j is y0 + j
@@ -172,6 +173,40 @@ struct alignas(64) PlacedSpans {  // one cache line: tiles copy these by the ten
     uint32_t core_words = 0;
 };
 static_assert(sizeof(PlacedSpans) == 64);
+// Whole-frame rendering keeps what it needs of each distinct footprint of a frame once, in a
+// small table that stays in cache (MaskRef), and lists the strokes of every tile as 16-byte
+// TileItems that refer to it: the per-tile lists are written once and read twice per frame.
+struct MaskRef {
+    const SpanRow* rows = nullptr;
+    const uint8_t* cov3 = nullptr;
+    const uint8_t* dense = nullptr;    // SpanMask::dense, or nullptr
+    const uint64_t* core = nullptr;    // SpanMask::core, or nullptr (then extent is too)
+    const uint32_t* extent = nullptr;  // SpanMask::extent, or nullptr
+    uint32_t h = 0, dense_steps = 0, core_words = 0;
+};
+struct TileItem {
+    static constexpr uint32_t kNoMask = ~0u;
+    int32_t ox = 0, oy = 0;  // canvas position of the mask's column 0 / row 0
+    uint32_t mask = 0;       // index into the frame's MaskRef table; kNoMask: the stroke whose
+                             // index is ox is drawn from its own geometry
+    Rgba8 c;
+};
+static_assert(sizeof(TileItem) == 16);
+inline PlacedSpans placed(const TileItem& it, const MaskRef& m) {
+    PlacedSpans p;
+    p.rows = m.rows;
+    p.cov3 = m.cov3;
+    p.dense = m.dense;
+    p.core = m.core;
+    p.extent = m.extent;
+    p.ox = it.ox;
+    p.oy = it.oy;
+    p.h = m.h;
+    p.c = it.c;
+    p.dense_steps = m.dense_steps;
+    p.core_words = m.core_words;
+    return p;
+}
 // Composites p (SPEC 8.6), clipped to t.
 void blend_spans(const BlendTarget& t, const PlacedSpans& p);
 // Composites mask m with its column 0 / row 0 at canvas (ox, oy), clipped to t.

@@ -84,12 +84,14 @@ uint64_t rows_scalar(const CullBits& bits, const uint32_t* extent, uint32_t j0, 
     size_t slots = 0;                                                                                           \
     const int64_t width = t.x1 - t.x0;                                                                          \
     for (uint32_t i = n; i-- > 0;) {                                                                            \
-        const PlacedSpans& p = list[i];                                                                         \
+        const TileItem& it = list[i];                                                                           \
+        if (it.mask == TileItem::kNoMask) continue;                                                             \
+        const MaskRef& p = masks[it.mask];                                                                      \
         if (!p.extent) continue;                                                                                \
-        const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy);                                                   \
-        const int64_t j1 = std::max(j0, std::min<int64_t>(p.h, t.y1 - p.oy));                                   \
-        const int64_t dx = int64_t(p.ox) - t.x0, r0 = p.oy + j0 - t.y0;                                         \
-        if (cull_dense(p, t)) {                                                                                 \
+        const int64_t j0 = std::max<int64_t>(0, t.y0 - it.oy);                                                  \
+        const int64_t j1 = std::max(j0, std::min<int64_t>(p.h, t.y1 - it.oy));                                  \
+        const int64_t dx = int64_t(it.ox) - t.x0, r0 = it.oy + j0 - t.y0;                                       \
+        if (cull_dense(it, p, t)) {                                                                             \
             const uint64_t vis = ROWS(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width);               \
             plan.rows[2 * size_t(i)] = vis ? uint32_t(j0 + __builtin_ctzll(vis)) : 0;                           \
             plan.rows[2 * size_t(i) + 1] = vis ? uint32_t(j0 + 64 - __builtin_clzll(vis)) : 0;                  \
@@ -101,11 +103,12 @@ uint64_t rows_scalar(const CullBits& bits, const uint32_t* extent, uint32_t j0, 
                         &plan.cols[slots * 2 * CullBits::kRows]);                                               \
             ++slots;                                                                                            \
         }                                                                                                       \
-        if (p.c.a == 255 && j1 > j0) MARK(bits, p.core, p.core_words, p.h, uint32_t(j0), uint32_t(j1), dx, r0); \
+        if (it.c.a == 255 && j1 > j0) MARK(bits, p.core, p.core_words, p.h, uint32_t(j0), uint32_t(j1), dx, r0); \
     }                                                                                                           \
     plan.slots = slots;
 
-void tile_scalar(CullBits& bits, const PlacedSpans* list, uint32_t n, const CullTile& t, CullPlan& plan) {
+void tile_scalar(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks, const CullTile& t,
+                 CullPlan& plan) {
     SPT_CULL_TILE_LOOP(mark_scalar, visible_scalar, rows_scalar)
 }
 
@@ -214,8 +217,8 @@ SPT_CULL_TARGET inline uint64_t rows_avx512(const CullBits& bits, const uint32_t
     return out;
 }
 
-SPT_CULL_TARGET void tile_avx512(CullBits& bits, const PlacedSpans* list, uint32_t n, const CullTile& t,
-                                 CullPlan& plan) {
+SPT_CULL_TARGET void tile_avx512(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks,
+                                 const CullTile& t, CullPlan& plan) {
     SPT_CULL_TILE_LOOP(mark_avx512, visible_avx512, rows_avx512)
 }
 #undef SPT_CULL_TARGET
@@ -225,7 +228,7 @@ SPT_CULL_TARGET void tile_avx512(CullBits& bits, const PlacedSpans* list, uint32
 
 using MarkFn = void (*)(CullBits&, const uint64_t*, uint32_t, uint32_t, uint32_t, uint32_t, int64_t, int64_t);
 using VisibleFn = void (*)(const CullBits&, const uint32_t*, uint32_t, uint32_t, int64_t, int64_t, int64_t, uint8_t*);
-using TileFn = void (*)(CullBits&, const PlacedSpans*, uint32_t, const CullTile&, CullPlan&);
+using TileFn = void (*)(CullBits&, const TileItem*, uint32_t, const MaskRef*, const CullTile&, CullPlan&);
 
 struct CullKernels {
     MarkFn mark;
@@ -265,8 +268,9 @@ void cull_visible(const CullBits& bits, const uint32_t* extent, uint32_t j0, uin
     if (j1 > j0) cull_kernels().visible(bits, extent, j0, j1, dx, r0, width, cols);
 }
 
-void cull_tile(CullBits& bits, const PlacedSpans* list, uint32_t n, const CullTile& t, CullPlan& plan) {
-    cull_kernels().tile(bits, list, n, t, plan);
+void cull_tile(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks, const CullTile& t,
+               CullPlan& plan) {
+    cull_kernels().tile(bits, list, n, masks, t, plan);
 }
 
 }  // namespace spt::raster

@@ -47,10 +47,10 @@ struct CullTile {
     int64_t dense_lo = 0, dense_hi3 = 0;
 };
 
-// True when the tile draws p from its dense box (raster::blend_dense).
-inline bool cull_dense(const PlacedSpans& p, const CullTile& t) {
-    const int64_t dx = int64_t(p.ox) - t.x0;
-    return t.dense && p.dense && dx >= t.dense_lo && 3 * dx + int64_t(p.dense_steps * kDenseStep) <= t.dense_hi3;
+// True when the tile draws item `it` of mask m from its dense box (raster::blend_dense).
+inline bool cull_dense(const TileItem& it, const MaskRef& m, const CullTile& t) {
+    const int64_t dx = int64_t(it.ox) - t.x0;
+    return t.dense && m.dense && dx >= t.dense_lo && 3 * dx + int64_t(m.dense_steps * kDenseStep) <= t.dense_hi3;
 }
 
 // What a tile's backwards pass found, for its forward (drawing) pass.
@@ -64,9 +64,11 @@ struct CullPlan {
     size_t slots = 0;  // span-culled entries in cols
 };
 
-// The backwards pass over a tile's entries list[0..n): bits are cleared, then for each entry
-// with a core (PlacedSpans::extent set), last to first: its visible rows (dense) or columns
-// (otherwise) into plan, then, when its alpha is 255, its core into bits.
-void cull_tile(CullBits& bits, const PlacedSpans* list, uint32_t n, const CullTile& t, CullPlan& plan);
+// The backwards pass over a tile's entries list[0..n) (masks: the frame's MaskRef table): bits
+// are cleared, then for each entry whose mask has a core (MaskRef::extent set), last to first:
+// its visible rows (dense) or columns (otherwise) into plan, then, when its alpha is 255, its
+// core into bits.
+void cull_tile(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks, const CullTile& t,
+               CullPlan& plan);
 
 }  // namespace spt::raster

@@ -68,6 +68,7 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
                 sm->y0 = int32_t(m.y0 + int64_t(first));
                 span_mask_make_dense(*sm);
                 span_mask_make_core(*sm);
+                sm->id = uint32_t(owned_spans_.size());
                 cache_bytes_.fetch_add(sm->bytes(), std::memory_order_relaxed);
                 f = sm.get();
                 owned_spans_.push_back(std::move(sm));

@@ -41,17 +41,19 @@ static_assert(kTileW == CullBits::kTileCols && kTileH == CullBits::kRows && kApr
 // later stroke covers opaquely; every opaque stroke then marks its core. Narrow strokes are
 // not culled (a row of a dense box is blended whole, about as cheap as testing it) but mark.
 // Only pixels that a later stroke overwrites completely are skipped: the bytes are the same.
-// Every stroke prepared for the tiles: a stamp with a cached footprint is drawn from its
-// record alone (items[k].rows set); anything else through draw_into(strokes[stroke[k]]).
-// Records are copied into every tile's list, so that a tile reads its strokes sequentially
-// (twice: culling, then drawing); a list of item numbers measured slower.
+// Every stroke prepared for the tiles: a stamp with a cached footprint as a TileItem of its
+// mask (masks: the frame's table; mask_slot: SpanMask::id -> table index + 1, reset after each
+// frame), anything else as a TileItem without mask, drawn by draw_into(). Items are copied
+// into every tile's list (16 bytes each), so that a tile reads its strokes sequentially, twice
+// (culling, then drawing); lists of item numbers measured slower.
 struct Bins {
-    std::vector<PlacedSpans> items;
-    std::vector<uint32_t> stroke;  // per item: its index in the stroke list
-    std::vector<uint16_t> range;   // per item: first and last tile column, first and last tile row
-    std::vector<uint32_t> start;   // tiles + 1 offsets into list
-    std::vector<PlacedSpans> list;  // the items of each tile, in drawing order
-    std::vector<uint32_t> list_stroke;  // and their strokes' indices
+    std::vector<TileItem> items;
+    std::vector<uint16_t> range;  // per item: first and last tile column, first and last tile row
+    std::vector<uint32_t> start;  // tiles + 1 offsets into list
+    std::vector<TileItem> list;   // the items of each tile, in drawing order
+    std::vector<MaskRef> masks;
+    std::vector<uint32_t> mask_ids;   // SpanMask::id of each table entry
+    std::vector<uint32_t> mask_slot;
 };
 
 Bins& scratch_bins() {
@@ -78,42 +80,54 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     // them one by one would have done, and the error names it.
     Bins& bins = scratch_bins();
     bins.items.clear();
-    bins.stroke.clear();
     bins.range.clear();
-    auto add = [&](const PlacedSpans& p, size_t i, int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
+    bins.masks.clear();
+    bins.mask_ids.clear();
+    auto add = [&](const TileItem& it, int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
         x0 = std::max<int64_t>(x0, 0); x1 = std::min<int64_t>(x1, W - 1);
         y0 = std::max<int64_t>(y0, 0); y1 = std::min<int64_t>(y1, H - 1);
         if (x0 > x1 || y0 > y1) return;
-        bins.items.push_back(p);
-        bins.stroke.push_back(uint32_t(i));
+        bins.items.push_back(it);
         bins.range.insert(bins.range.end(), {uint16_t(x0 / kTileW), uint16_t(x1 / kTileW), uint16_t(y0 / kTileH),
                                              uint16_t(y1 / kTileH)});
+    };
+    auto mask_index = [&](const SpanMask& f) {
+        if (f.id >= bins.mask_slot.size()) bins.mask_slot.resize(size_t(f.id) + 1, 0);
+        uint32_t& slot = bins.mask_slot[f.id];
+        if (!slot) {
+            MaskRef m;
+            m.rows = f.rows.data();
+            m.cov3 = f.cov3.data();
+            m.h = uint32_t(f.rows.size());
+            if (!f.extent.empty()) {
+                m.core = f.core.data();
+                m.extent = f.extent.data();
+                m.core_words = f.core_words;
+            }
+            if (f.dense_steps) {
+                m.dense = f.dense.data();
+                m.dense_steps = f.dense_steps;
+            }
+            bins.masks.push_back(m);
+            bins.mask_ids.push_back(f.id);
+            slot = uint32_t(bins.masks.size());
+        }
+        return slot - 1;
     };
     Status error;
     for (size_t i = 0; i < strokes.size(); ++i) {
         const Stroke& s = strokes[i];
-        PlacedSpans p;
+        TileItem it;
         // The common case first: a valid stamp with a cached footprint (its box is the mask's).
         if (s.kind == StrokeKind::Stamp && stamp_valid(s.stamp)) {
             const StampStroke& st = s.stamp;
             if (const SpanMask* f = spans(st.set, st.tmpl, st.orient)) {
                 if (st.color.a == 0 || f->rows.empty()) continue;
-                p.c = st.color;
-                p.rows = f->rows.data();
-                p.cov3 = f->cov3.data();
-                p.h = uint32_t(f->rows.size());
-                p.ox = int32_t(stamp_pixel(st.x) + f->x0);
-                p.oy = int32_t(stamp_pixel(st.y) + f->y0);
-                if (!f->extent.empty()) {
-                    p.core = f->core.data();
-                    p.extent = f->extent.data();
-                    p.core_words = f->core_words;
-                }
-                if (f->dense_steps) {
-                    p.dense = f->dense.data();
-                    p.dense_steps = f->dense_steps;
-                }
-                add(p, i, p.ox, p.oy, int64_t(p.ox) + f->w - 1, int64_t(p.oy) + p.h - 1);
+                it.c = st.color;
+                it.ox = int32_t(stamp_pixel(st.x) + f->x0);
+                it.oy = int32_t(stamp_pixel(st.y) + f->y0);
+                it.mask = mask_index(*f);
+                add(it, it.ox, it.oy, int64_t(it.ox) + f->w - 1, int64_t(it.oy) + int64_t(f->rows.size()) - 1);
                 continue;
             }
         }
@@ -123,14 +137,17 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             error = e;
             break;
         }
-        p.c = s.color();
-        if (p.c.a == 0) continue;
+        it.c = s.color();
+        if (it.c.a == 0) continue;
+        it.ox = int32_t(i);
+        it.mask = TileItem::kNoMask;
         int64_t x0, y0, x1, y1;
         stroke_box(s, x0, y0, x1, y1);
-        add(p, i, x0, y0, x1, y1);
+        add(it, x0, y0, x1, y1);
     }
+    for (uint32_t id : bins.mask_ids) bins.mask_slot[id] = 0;  // ready for the next frame
 
-    // Counting sort of (tile, entry) pairs: one flat list, drawing order kept within a tile.
+    // Counting sort of (tile, item) pairs: one flat list, drawing order kept within a tile.
     bins.start.assign(tiles + 1, 0);
     const size_t n = bins.items.size();
     for (size_t k = 0; k < n; ++k) {
@@ -140,17 +157,12 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     }
     for (size_t t = 0; t < tiles; ++t) bins.start[t + 1] += bins.start[t];
     bins.list.resize(bins.start[tiles]);
-    bins.list_stroke.resize(bins.start[tiles]);
     {
         std::vector<uint32_t> fill(bins.start.begin(), bins.start.end() - 1);
         for (size_t k = 0; k < n; ++k) {
             const uint16_t* r = &bins.range[4 * k];
             for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
-                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) {
-                    const uint32_t at = fill[size_t(ty) * size_t(tiles_x) + tx]++;
-                    bins.list[at] = bins.items[k];
-                    bins.list_stroke[at] = bins.stroke[k];
-                }
+                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) bins.list[fill[size_t(ty) * size_t(tiles_x) + tx]++] = bins.items[k];
         }
     }
 
@@ -183,27 +195,32 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             const size_t row_bytes = size_t(t.x1 - t.x0) * 3;
             for (int64_t y = t.y0; y < t.y1; ++y) std::memcpy(origin + size_t(y - t.y0) * kTileStride, bg_row, row_bytes);
             const uint32_t first = bins.start[tile], count = bins.start[tile + 1] - first;
-            const PlacedSpans* list = &bins.list[first];
+            const TileItem* list = &bins.list[first];
+            const MaskRef* masks = bins.masks.data();
             CullTile ct;
             ct.x0 = t.x0; ct.y0 = t.y0; ct.x1 = t.x1; ct.y1 = t.y1;
             ct.dense = dense;
             ct.dense_lo = -kApronX;
             ct.dense_hi3 = 3 * (kTileW + kApronX);
 
-            cull_tile(cull, list, count, ct, plan);
+            cull_tile(cull, list, count, masks, ct, plan);
             size_t slots = plan.slots;  // span-culled entries: their columns are in plan.cols, last first
             for (uint32_t i = 0; i < count; ++i) {
-                const PlacedSpans& p = list[i];
-                if (p.extent && cull_dense(p, ct)) {
+                const TileItem& it = list[i];
+                if (it.mask == TileItem::kNoMask) {
+                    draw_into(t, strokes[uint32_t(it.ox)]);
+                    continue;
+                }
+                const MaskRef& m = masks[it.mask];
+                const PlacedSpans p = placed(it, m);
+                if (m.extent && cull_dense(it, m, ct)) {
                     const uint32_t j0 = plan.rows[2 * size_t(i)], j1 = plan.rows[2 * size_t(i) + 1];
                     blend_dense(origin + (p.oy + int64_t(j0) - t.y0) * int64_t(kTileStride) + 3 * (p.ox - t.x0), kTileStride,
                                 p, j0, std::max(j0, j1));
-                } else if (p.extent) {
+                } else if (m.extent) {
                     blend_spans_cols(t, p, &plan.cols[--slots * 2 * CullBits::kRows]);
-                } else if (p.rows) {
-                    blend_spans(t, p);
                 } else {
-                    draw_into(t, strokes[bins.list_stroke[first + i]]);
+                    blend_spans(t, p);
                 }
             }
             for (int64_t y = t.y0; y < t.y1; ++y)
