@@ -131,15 +131,18 @@ struct SpanMask {
     // coverage 255 (word-column-major, so that one word of consecutive rows is contiguous);
     uint32_t core_words = 0;     // (w + 63) / 64
     std::vector<uint64_t> core;  // core_words * rows.size()
-    // and each row's span as lo | (lo + n) << 16 (w < 65536 for masks that keep a core).
+    // and each row's span as lo | (lo + n) << 16 (w < 65536 for masks that keep a core);
     std::vector<uint32_t> extent;
+    // for masks of one core word a row (w <= 64), the footprint: bit i of foot[j] is set when
+    // column i of row j has coverage above 0.
+    std::vector<uint64_t> foot;
     size_t bytes() const {
-        return rows.size() * sizeof(SpanRow) + cov3.size() + dense.size() + core.size() * sizeof(uint64_t) +
-               extent.size() * sizeof(uint32_t);
+        return rows.size() * sizeof(SpanRow) + cov3.size() + dense.size() +
+               (core.size() + foot.size()) * sizeof(uint64_t) + extent.size() * sizeof(uint32_t);
     }
 };
-// Fills m.core and m.extent from m's spans (after its rows and w are final); leaves them empty
-// when w >= 65536.
+// Fills m.core, m.extent and m.foot from m's spans (after its rows and w are final); leaves
+// them empty when w >= 65536 (foot: when w > 64).
 void span_mask_make_core(SpanMask& m);
 // Fills m.dense from m's spans when m is narrow enough (after its rows and w are final).
 void span_mask_make_dense(SpanMask& m);
@@ -182,6 +185,7 @@ struct MaskRef {
     const uint8_t* dense = nullptr;    // SpanMask::dense, or nullptr
     const uint64_t* core = nullptr;    // SpanMask::core, or nullptr (then extent is too)
     const uint32_t* extent = nullptr;  // SpanMask::extent, or nullptr
+    const uint64_t* foot = nullptr;    // SpanMask::foot, or nullptr
     uint32_t h = 0, dense_steps = 0, core_words = 0;
 };
 struct TileItem {

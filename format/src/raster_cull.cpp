@@ -77,12 +77,34 @@ uint64_t rows_scalar(const CullBits& bits, const uint32_t* extent, uint32_t j0, 
     return out;
 }
 
+// A mask of one word a row (MaskRef::foot set) with its column 0 at bit q = dx + kBias of the
+// word columns, 0 <= q < 256: the rows [j0, j1) that have a footprint pixel in a live column
+// (live[k]: the bits of word column k that are tile columns) not yet hidden, as bits from
+// j0; then, when `opaque`, the core is marked. One pass over the rows for both.
+uint64_t narrow_scalar(CullBits& bits, const MaskRef& m, uint32_t j0, uint32_t j1, int64_t dx, int64_t r0,
+                       const uint64_t* live, bool opaque) {
+    const int64_t q = dx + kBias, wi = q >> 6, sh = q & 63;
+    uint64_t out = 0;
+    for (uint32_t j = j0; j < j1; ++j, ++r0) {
+        const uint64_t f = m.foot[j], c = m.core[j];
+        const uint64_t lo = f << sh, hi = sh ? f >> (64 - sh) : 0;
+        if ((lo & live[wi] & ~bits.w[wi][r0]) | (hi & live[wi + 1] & ~bits.w[wi + 1][r0])) out |= uint64_t(1) << (j - j0);
+        if (opaque) {
+            bits.w[wi][r0] |= c << sh;
+            if (sh) bits.w[wi + 1][r0] |= c >> (64 - sh);
+        }
+    }
+    return out;
+}
+
 // The tile loop of cull_tile, expanded per ISA so that the kernels inline.
-#define SPT_CULL_TILE_LOOP(MARK, VISIBLE, ROWS)                                                                 \
+#define SPT_CULL_TILE_LOOP(MARK, VISIBLE, ROWS, NARROW)                                                         \
     bits.clear();                                                                                               \
     if (plan.rows.size() < 2 * size_t(n)) plan.rows.resize(2 * size_t(n));                                      \
     size_t slots = 0;                                                                                           \
     const int64_t width = t.x1 - t.x0;                                                                          \
+    uint64_t live[CullBits::kWordCols];                                                                         \
+    for (uint32_t k = 0; k < CullBits::kWordCols; ++k) live[k] = range_word(0, width, 64 * int64_t(k) - kBias); \
     for (uint32_t i = n; i-- > 0;) {                                                                            \
         const TileItem& it = list[i];                                                                           \
         if (it.mask == TileItem::kNoMask) continue;                                                             \
@@ -92,9 +114,12 @@ uint64_t rows_scalar(const CullBits& bits, const uint32_t* extent, uint32_t j0, 
         const int64_t j1 = std::max(j0, std::min<int64_t>(p.h, t.y1 - it.oy));                                  \
         const int64_t dx = int64_t(it.ox) - t.x0, r0 = it.oy + j0 - t.y0;                                       \
         if (cull_dense(it, p, t)) {                                                                             \
-            const uint64_t vis = ROWS(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width);               \
+            const bool narrow = p.foot && dx >= -kBias && dx < 4 * 64 - kBias;                                  \
+            const uint64_t vis = narrow ? NARROW(bits, p, uint32_t(j0), uint32_t(j1), dx, r0, live, it.c.a == 255) \
+                                        : ROWS(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width);      \
             plan.rows[2 * size_t(i)] = vis ? uint32_t(j0 + __builtin_ctzll(vis)) : 0;                           \
             plan.rows[2 * size_t(i) + 1] = vis ? uint32_t(j0 + 64 - __builtin_clzll(vis)) : 0;                  \
+            if (narrow) continue; /* marked already */                                                          \
         } else {                                                                                                \
             if (plan.cols.size() < (slots + 1) * 2 * CullBits::kRows)                                           \
                 plan.cols.resize((slots + 1) * 2 * CullBits::kRows);                                            \
@@ -109,7 +134,7 @@ uint64_t rows_scalar(const CullBits& bits, const uint32_t* extent, uint32_t j0, 
 
 void tile_scalar(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks, const CullTile& t,
                  CullPlan& plan) {
-    SPT_CULL_TILE_LOOP(mark_scalar, visible_scalar, rows_scalar)
+    SPT_CULL_TILE_LOOP(mark_scalar, visible_scalar, rows_scalar, narrow_scalar)
 }
 
 #ifdef SPT_CULL_X86
@@ -217,9 +242,35 @@ SPT_CULL_TARGET inline uint64_t rows_avx512(const CullBits& bits, const uint32_t
     return out;
 }
 
+SPT_CULL_TARGET inline uint64_t narrow_avx512(CullBits& bits, const MaskRef& mr, uint32_t j0, uint32_t j1, int64_t dx,
+                                              int64_t r0, const uint64_t* live, bool opaque) {
+    const int64_t q = dx + kBias, wi = q >> 6, sh = q & 63;
+    const __m128i left = _mm_cvtsi64_si128(sh), right = _mm_cvtsi64_si128(64 - sh);  // 64: gives 0
+    const __m512i live_lo = _mm512_set1_epi64(int64_t(live[wi])), live_hi = _mm512_set1_epi64(int64_t(live[wi + 1]));
+    uint64_t* lo = &bits.w[wi][r0];
+    uint64_t* hi = &bits.w[wi + 1][r0];
+    uint64_t out = 0;
+    const uint32_t n = j1 - j0;
+    for (uint32_t j = 0; j < n; j += 8) {
+        const __mmask8 m = rows_mask(n - j);
+        const __m512i f = _mm512_maskz_loadu_epi64(m, mr.foot + j0 + j);
+        const __m512i b0 = _mm512_maskz_loadu_epi64(m, lo + j), b1 = _mm512_maskz_loadu_epi64(m, hi + j);
+        // (f << sh) & live_lo & ~b0 | (f >> (64 - sh)) & live_hi & ~b1
+        const __m512i v0 = _mm512_ternarylogic_epi64(_mm512_sll_epi64(f, left), live_lo, b0, 0x40);  // a & b & ~c
+        const __m512i v1 = _mm512_ternarylogic_epi64(_mm512_srl_epi64(f, right), live_hi, b1, 0x40);
+        out |= uint64_t(_mm512_mask_test_epi64_mask(m, _mm512_or_si512(v0, v1), _mm512_or_si512(v0, v1))) << j;
+        if (opaque) {
+            const __m512i c = _mm512_maskz_loadu_epi64(m, mr.core + j0 + j);
+            _mm512_mask_storeu_epi64(lo + j, m, _mm512_or_si512(b0, _mm512_sll_epi64(c, left)));
+            _mm512_mask_storeu_epi64(hi + j, m, _mm512_or_si512(b1, _mm512_srl_epi64(c, right)));
+        }
+    }
+    return out;
+}
+
 SPT_CULL_TARGET void tile_avx512(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks,
                                  const CullTile& t, CullPlan& plan) {
-    SPT_CULL_TILE_LOOP(mark_avx512, visible_avx512, rows_avx512)
+    SPT_CULL_TILE_LOOP(mark_avx512, visible_avx512, rows_avx512, narrow_avx512)
 }
 #undef SPT_CULL_TARGET
 #pragma GCC diagnostic pop

@@ -452,8 +452,10 @@ void span_mask_make_dense(SpanMask& m) {
 void span_mask_make_core(SpanMask& m) {
     m.core.clear();
     m.extent.clear();
+    m.foot.clear();
     m.core_words = 0;
     if (m.w >= 65536) return;
+    if (m.w <= 64) m.foot.assign(m.rows.size(), 0);
     const size_t h = m.rows.size();
     m.core_words = (m.w + 63) / 64;
     m.core.assign(h * m.core_words, 0);
@@ -461,11 +463,12 @@ void span_mask_make_core(SpanMask& m) {
     for (size_t j = 0; j < h; ++j) {
         const SpanRow& r = m.rows[j];
         if (r.n) m.extent[j] = uint32_t(r.lo) | (uint32_t(r.lo) + r.n) << 16;
-        for (uint32_t i = 0; i < r.n; ++i)
-            if (m.cov3[r.off + 3 * size_t(i)] == 255) {
-                const uint32_t col = uint32_t(r.lo) + i;
-                m.core[(col / 64) * h + j] |= uint64_t(1) << (col % 64);
-            }
+        for (uint32_t i = 0; i < r.n; ++i) {
+            const uint8_t cov = m.cov3[r.off + 3 * size_t(i)];
+            const uint32_t col = uint32_t(r.lo) + i;
+            if (cov == 255) m.core[(col / 64) * h + j] |= uint64_t(1) << (col % 64);
+            if (cov && !m.foot.empty()) m.foot[j] |= uint64_t(1) << col;
+        }
     }
 }
 

@@ -33,7 +33,7 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
             // Upper bound of the stored size, checked before anything is allocated.
             const uint64_t bound = uint64_t(w) * uint64_t(h) * 3 + uint64_t(h) * (kSpanPad + sizeof(SpanRow)) +
                                    (uint64_t(w) * 3 <= kDenseMaxSteps * kDenseStep ? uint64_t(h) * kDenseMaxSteps * 2 * kDenseStep : 0) +
-                                   uint64_t(h) * (((uint64_t(w) + 63) / 64) * sizeof(uint64_t) + sizeof(uint32_t));
+                                   uint64_t(h) * (((uint64_t(w) + 63) / 64 + 1) * sizeof(uint64_t) + sizeof(uint32_t));
             const size_t used = cache_bytes_.load(std::memory_order_relaxed);
             if (bound > kMaxFootprintBytes || used + bound > kFootprintCacheBytes) {
                 f = &kUncached;

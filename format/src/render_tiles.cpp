@@ -103,6 +103,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
                 m.core = f.core.data();
                 m.extent = f.extent.data();
                 m.core_words = f.core_words;
+                if (!f.foot.empty()) m.foot = f.foot.data();
             }
             if (f.dense_steps) {
                 m.dense = f.dense.data();
