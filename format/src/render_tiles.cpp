@@ -79,17 +79,26 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     // reads shared state). On a bad stroke, the strokes before it are still drawn, as drawing
     // them one by one would have done, and the error names it.
     Bins& bins = scratch_bins();
-    bins.items.clear();
-    bins.range.clear();
     bins.masks.clear();
     bins.mask_ids.clear();
+    // Items are counted per tile as they are made (start[t + 1]: items of tile t so far).
+    bins.start.assign(tiles + 1, 0);
+    if (bins.items.size() < strokes.size()) {
+        bins.items.resize(strokes.size());
+        bins.range.resize(4 * strokes.size());
+    }
+    size_t n = 0;
     auto add = [&](const TileItem& it, int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
         x0 = std::max<int64_t>(x0, 0); x1 = std::min<int64_t>(x1, W - 1);
         y0 = std::max<int64_t>(y0, 0); y1 = std::min<int64_t>(y1, H - 1);
         if (x0 > x1 || y0 > y1) return;
-        bins.items.push_back(it);
-        bins.range.insert(bins.range.end(), {uint16_t(x0 / kTileW), uint16_t(x1 / kTileW), uint16_t(y0 / kTileH),
-                                             uint16_t(y1 / kTileH)});
+        const uint32_t tx0 = uint32_t(x0 / kTileW), tx1 = uint32_t(x1 / kTileW);
+        const uint32_t ty0 = uint32_t(y0 / kTileH), ty1 = uint32_t(y1 / kTileH);
+        bins.items[n] = it;
+        uint16_t* r = &bins.range[4 * n++];
+        r[0] = uint16_t(tx0); r[1] = uint16_t(tx1); r[2] = uint16_t(ty0); r[3] = uint16_t(ty1);
+        for (uint32_t ty = ty0; ty <= ty1; ++ty)
+            for (uint32_t tx = tx0; tx <= tx1; ++tx) ++bins.start[size_t(ty) * size_t(tiles_x) + tx + 1];
     };
     auto mask_index = [&](const SpanMask& f) {
         if (f.id >= bins.mask_slot.size()) bins.mask_slot.resize(size_t(f.id) + 1, 0);
@@ -149,13 +158,6 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     for (uint32_t id : bins.mask_ids) bins.mask_slot[id] = 0;  // ready for the next frame
 
     // Counting sort of (tile, item) pairs: one flat list, drawing order kept within a tile.
-    bins.start.assign(tiles + 1, 0);
-    const size_t n = bins.items.size();
-    for (size_t k = 0; k < n; ++k) {
-        const uint16_t* r = &bins.range[4 * k];
-        for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
-            for (uint32_t tx = r[0]; tx <= r[1]; ++tx) ++bins.start[size_t(ty) * size_t(tiles_x) + tx + 1];
-    }
     for (size_t t = 0; t < tiles; ++t) bins.start[t + 1] += bins.start[t];
     bins.list.resize(bins.start[tiles]);
     {
