@@ -3,8 +3,9 @@
 // A pixel where a later stroke has coverage 255 and alpha 255 ends up that stroke's colour
 // whatever was drawn there before (SPEC 8.6), so an exact renderer may skip earlier strokes
 // there. A tile walks its strokes backwards keeping one bit a pixel, "hidden by what comes
-// later": each stroke first asks which of its columns are still visible (cull_visible), then
-// adds its opaque core (cull_mark). Both work on whole columns of rows at once, eight rows a
+// later": each stroke first asks which of its columns (cull_visible), or for a narrow stroke
+// which of its rows, are still visible, then adds its opaque core (cull_mark); cull_tile does
+// the whole walk. Both work on whole columns of rows at once, eight rows a
 // vector with AVX-512: per stroke row they cost a fraction of blending it.
 #pragma once
 

@@ -2,9 +2,10 @@
 // places touches the whole canvas (2.7 MB at 1280x720) for every few strokes, so most time goes
 // to cache misses. Instead every stroke is binned into the tiles its box touches; each tile is
 // then rendered on its own in a small buffer that stays in L1 (background, then its strokes in
-// drawing order, each clipped to the tile), and copied out. A pixel sees exactly the strokes
-// that cover it, in the same order, with the same arithmetic: the bytes equal drawing stroke
-// by stroke (tests/format/render_tiles_test.cpp). Tiles are independent, so threads can render
+// drawing order, each clipped to the tile, less what later strokes hide), and copied out.
+// A pixel sees exactly the strokes that cover it and stay visible, in the same order, with
+// the same arithmetic: the bytes equal drawing stroke by stroke (render_tiles_test.cpp,
+// render_cull_test.cpp). Tiles are independent, so threads can render
 // different tiles of one frame without changing a byte.
 #include <algorithm>
 #include <atomic>
@@ -38,9 +39,10 @@ static_assert(kTileW == CullBits::kTileCols && kTileH == CullBits::kRows && kApr
 // Occlusion culling (raster_cull.hpp). Before drawing, a tile walks its strokes backwards;
 // each stroke drawn span by span (the big, coarse ones: painters put them first and cover
 // most of their pixels) gets, per row, the columns from its first to its last pixel that no
-// later stroke covers opaquely; every opaque stroke then marks its core. Narrow strokes are
-// not culled (a row of a dense box is blended whole, about as cheap as testing it) but mark.
-// Only pixels that a later stroke overwrites completely are skipped: the bytes are the same.
+// later stroke covers opaquely, and each stroke drawn from its dense box the range of its rows
+// that hold such a pixel; every opaque stroke then marks its core. Only pixels that a later
+// stroke overwrites completely are skipped, so the bytes are the same (SPEC 8.6 notes).
+
 // Every stroke prepared for the tiles: a stamp with a cached footprint as a TileItem of its
 // mask (masks: the frame's table; mask_slot: SpanMask::id -> table index + 1, reset after each
 // frame), anything else as a TileItem without mask, drawn by draw_into(). Items are copied
