@@ -473,6 +473,7 @@ void span_mask_make_core(SpanMask& m) {
 }
 
 bool dense_available() { return kernels().dense != nullptr; }
+DenseKernel dense_kernel() { return kernels().dense; }
 
 void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
     if (p.c.a == 0) return;

@@ -178,7 +178,8 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
         bg_row[3 * i + 2] = header_.background.b;
     }
 
-    const bool dense = dense_available();
+    const DenseKernel dense_fn = dense_kernel();
+    const bool dense = dense_fn != nullptr;
     std::atomic<size_t> next{0};
     auto worker = [&]() {
         thread_local std::vector<uint8_t> buf;  // zeroed once; the apron then holds leftovers
@@ -217,15 +218,16 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
                     continue;
                 }
                 const MaskRef& m = masks[it.mask];
-                const PlacedSpans p = placed(it, m);
-                if (m.extent && cull_dense(it, m, ct)) {
+                if (m.extent && cull_dense(it, m, ct)) {  // the dense kernel, called directly
                     const uint32_t j0 = plan.rows[2 * size_t(i)], j1 = plan.rows[2 * size_t(i) + 1];
-                    blend_dense(origin + (p.oy + int64_t(j0) - t.y0) * int64_t(kTileStride) + 3 * (p.ox - t.x0), kTileStride,
-                                p, j0, std::max(j0, j1));
+                    if (j1 > j0)
+                        dense_fn(origin + (it.oy + int64_t(j0) - t.y0) * int64_t(kTileStride) + 3 * (it.ox - t.x0),
+                                 kTileStride, m.dense + size_t(j0) * m.dense_steps * 2 * kDenseStep, j1 - j0,
+                                 m.dense_steps, it.c);
                 } else if (m.extent) {
-                    blend_spans_cols(t, p, &plan.cols[--slots * 2 * CullBits::kRows]);
+                    blend_spans_cols(t, placed(it, m), &plan.cols[--slots * 2 * CullBits::kRows]);
                 } else {
-                    blend_spans(t, p);
+                    blend_spans(t, placed(it, m));
                 }
             }
             for (int64_t y = t.y0; y < t.y1; ++y)
