@@ -194,22 +194,31 @@ SPT_CULL_TARGET inline __m512i word_mask(__m512i a, __m512i b) {
     return _mm512_sllv_epi64(_mm512_srlv_epi64(_mm512_set1_epi64(-1), _mm512_sub_epi64(_mm512_set1_epi64(64), len)), a);
 }
 
+// The bits of tile columns that rows j .. j + 7 of an extent cover (lanes outside m: none),
+// in the two word columns of the tile.
+struct RowMasks {
+    __m512i m1, m2;
+};
+SPT_CULL_TARGET inline RowMasks row_masks(const uint32_t* extent, __mmask8 m, __m512i vdx, __m512i vw) {
+    const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64), low16 = _mm512_set1_epi64(0xFFFF);
+    const __m512i e = _mm512_cvtepu32_epi64(_mm256_maskz_loadu_epi32(m, extent));
+    const __m512i xs = _mm512_max_epi64(_mm512_add_epi64(_mm512_and_si512(e, low16), vdx), zero);
+    const __m512i xe = _mm512_min_epi64(_mm512_add_epi64(_mm512_srli_epi64(e, 16), vdx), vw);
+    return {word_mask(_mm512_min_epi64(xs, k64), _mm512_min_epi64(_mm512_max_epi64(xe, zero), k64)),
+            word_mask(_mm512_min_epi64(_mm512_max_epi64(_mm512_sub_epi64(xs, k64), zero), k64),
+                      _mm512_min_epi64(_mm512_max_epi64(_mm512_sub_epi64(xe, k64), zero), k64))};
+}
+
 SPT_CULL_TARGET inline void visible_avx512(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx,
-                                    int64_t r0, int64_t width, uint8_t* cols) {
+                                           int64_t r0, int64_t width, uint8_t* cols) {
     const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64);
-    const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width), low16 = _mm512_set1_epi64(0xFFFF);
+    const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width);
     const uint32_t n = j1 - j0;
     for (uint32_t j = 0; j < n; j += 8) {
         const __mmask8 m = rows_mask(n - j);
-        const __m512i e = _mm512_cvtepu32_epi64(_mm256_maskz_loadu_epi32(m, extent + j0 + j));
-        const __m512i xs = _mm512_max_epi64(_mm512_add_epi64(_mm512_and_si512(e, low16), vdx), zero);
-        const __m512i xe = _mm512_min_epi64(_mm512_add_epi64(_mm512_srli_epi64(e, 16), vdx), vw);
-        const __m512i m1 = word_mask(_mm512_min_epi64(xs, k64), _mm512_min_epi64(_mm512_max_epi64(xe, zero), k64));
-        const __m512i xs2 = _mm512_sub_epi64(xs, k64), xe2 = _mm512_sub_epi64(xe, k64);
-        const __m512i m2 = word_mask(_mm512_min_epi64(_mm512_max_epi64(xs2, zero), k64),
-                                     _mm512_min_epi64(_mm512_max_epi64(xe2, zero), k64));
-        const __m512i v1 = _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[1][r0 + j]), m1);
-        const __m512i v2 = _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[2][r0 + j]), m2);
+        const RowMasks rm = row_masks(extent + j0 + j, m, vdx, vw);
+        const __m512i v1 = _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[1][r0 + j]), rm.m1);
+        const __m512i v2 = _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[2][r0 + j]), rm.m2);
         const __mmask8 k1 = _mm512_test_epi64_mask(v1, v1), k2 = _mm512_test_epi64_mask(v2, v2);
         // Lowest set bit: 63 - lzcnt(v & -v); highest: 63 - lzcnt(v).
         const __m512i lz1 = _mm512_lzcnt_epi64(_mm512_and_si512(v1, _mm512_sub_epi64(zero, v1)));
@@ -221,22 +230,17 @@ SPT_CULL_TARGET inline void visible_avx512(const CullBits& bits, const uint32_t*
         _mm512_mask_cvtepi64_storeu_epi16(cols + 2 * j, m, _mm512_or_si512(lo, _mm512_slli_epi64(hi, 8)));
     }
 }
+
 SPT_CULL_TARGET inline uint64_t rows_avx512(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1,
                                             int64_t dx, int64_t r0, int64_t width) {
-    const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64);
-    const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width), low16 = _mm512_set1_epi64(0xFFFF);
+    const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width);
     uint64_t out = 0;
     const uint32_t n = j1 - j0;
     for (uint32_t j = 0; j < n; j += 8) {
         const __mmask8 m = rows_mask(n - j);
-        const __m512i e = _mm512_cvtepu32_epi64(_mm256_maskz_loadu_epi32(m, extent + j0 + j));
-        const __m512i xs = _mm512_max_epi64(_mm512_add_epi64(_mm512_and_si512(e, low16), vdx), zero);
-        const __m512i xe = _mm512_min_epi64(_mm512_add_epi64(_mm512_srli_epi64(e, 16), vdx), vw);
-        const __m512i m1 = word_mask(_mm512_min_epi64(xs, k64), _mm512_min_epi64(_mm512_max_epi64(xe, zero), k64));
-        const __m512i m2 = word_mask(_mm512_min_epi64(_mm512_max_epi64(_mm512_sub_epi64(xs, k64), zero), k64),
-                                     _mm512_min_epi64(_mm512_max_epi64(_mm512_sub_epi64(xe, k64), zero), k64));
-        const __m512i v = _mm512_or_si512(_mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[1][r0 + j]), m1),
-                                          _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[2][r0 + j]), m2));
+        const RowMasks rm = row_masks(extent + j0 + j, m, vdx, vw);
+        const __m512i v = _mm512_or_si512(_mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[1][r0 + j]), rm.m1),
+                                          _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[2][r0 + j]), rm.m2));
         out |= uint64_t(_mm512_mask_test_epi64_mask(m, v, v)) << j;
     }
     return out;
