@@ -161,9 +161,9 @@ struct BlendTarget {
     int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     bool slack = false;
 };
-// A SpanMask placed on the canvas for one stroke: what the tile loop keeps per binned stroke,
-// so that it reads one small record rather than chasing pointers.
-struct alignas(64) PlacedSpans {  // one cache line: tiles copy these by the ten thousand
+// A SpanMask placed on the canvas for one stroke, as the span kernels take it (whole-frame
+// rendering builds one from a TileItem and its MaskRef, placed()).
+struct PlacedSpans {
     const SpanRow* rows = nullptr;
     const uint8_t* cov3 = nullptr;
     const uint8_t* dense = nullptr;    // the mask's dense box, if it has one
@@ -175,7 +175,6 @@ struct alignas(64) PlacedSpans {  // one cache line: tiles copy these by the ten
     uint32_t dense_steps = 0;
     uint32_t core_words = 0;
 };
-static_assert(sizeof(PlacedSpans) == 64);
 // Whole-frame rendering keeps what it needs of each distinct footprint of a frame once, in a
 // small table that stays in cache (MaskRef), and lists the strokes of every tile as 16-byte
 // TileItems that refer to it: the per-tile lists are written once and read twice per frame.
