@@ -178,7 +178,7 @@ __attribute__((target("avx512f,avx512bw"))) inline __m512i opaque_pairs64(__m512
 
 // Opaque colours: opaque_pairs64, with the (c, 255 - c) pairs formed from the span's coverage.
 template <bool Opaque>
-__attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
+__attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* dst, const uint8_t* cov, const __m512i* pat,
                                                                       uint32_t bytes, uint32_t a8) {
     const __m512i a = _mm512_set1_epi16(int16_t(a8)), z = _mm512_setzero_si512();
     const __m512i k80 = _mm512_set1_epi8(int8_t(0x80)), ones = _mm512_set1_epi8(-1);
@@ -188,7 +188,7 @@ __attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* d
         const __mmask64 mask = n >= 64 ? ~__mmask64(0) : (__mmask64(1) << n) - 1;
         const __m512i d = _mm512_maskz_loadu_epi8(mask, dst + k);
         const __m512i c = _mm512_maskz_loadu_epi8(mask, cov + k);
-        const __m512i p = _mm512_loadu_si512(pat + ph);
+        const __m512i p = pat[ph];
         // unpack/pack work per 128-bit lane, so the bytes come back in order.
         __m512i r;
         if (Opaque) {
@@ -210,11 +210,11 @@ __attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* d
 // and is prepared once per stroke. Opaque strokes use opaque_pairs64 on the stored pairs.
 template <bool Opaque, int Steps>
 __attribute__((target("avx512f,avx512bw"))) inline void dense_avx512_t(uint8_t* dst, size_t stride, const uint8_t* pairs,
-                                                                       uint32_t h, const uint8_t* pat, uint32_t a8) {
+                                                                       uint32_t h, const __m512i* pat, uint32_t a8) {
     if (Opaque) {
         const __m512i k80 = _mm512_set1_epi8(int8_t(0x80));
         __m512i ps[Steps];
-        for (int s = 0; s < Steps; ++s) ps[s] = _mm512_xor_si512(_mm512_loadu_si512(pat + (64 * s) % 3), k80);
+        for (int s = 0; s < Steps; ++s) ps[s] = _mm512_xor_si512(pat[(64 * s) % 3], k80);
         for (uint32_t j = 0; j < h; ++j, dst += stride, pairs += 128 * Steps) {
             for (int s = 0; s < Steps; ++s) {
                 const __m512i d = _mm512_xor_si512(_mm512_loadu_si512(dst + 64 * s), k80);
@@ -227,7 +227,7 @@ __attribute__((target("avx512f,avx512bw"))) inline void dense_avx512_t(uint8_t* 
         const __m512i a = _mm512_set1_epi16(int16_t(a8)), z = _mm512_setzero_si512(), low = _mm512_set1_epi16(0xFF);
         __m512i plo[Steps], phi[Steps];
         for (int s = 0; s < Steps; ++s) {
-            const __m512i p = _mm512_loadu_si512(pat + (64 * s) % 3);
+            const __m512i p = pat[(64 * s) % 3];
             plo[s] = _mm512_unpacklo_epi8(p, z);
             phi[s] = _mm512_unpackhi_epi8(p, z);
         }
@@ -247,6 +247,13 @@ __attribute__((target("avx512f,avx512bw"))) inline void dense_avx512_t(uint8_t* 
 
 using SpanFn = void (*)(uint8_t*, const uint8_t*, const uint8_t*, uint32_t, uint32_t, bool);
 
+// The colour pattern of the narrower kernels: 96 bytes, byte k channel k % 3; a kernel loads it
+// at offset k % 3 to match byte k of a span.
+struct Pat96 {
+    alignas(32) uint8_t b[96];
+    operator uint8_t*() { return b; }
+    operator const uint8_t*() const { return b; }
+};
 void make_pattern(uint8_t* pat96, Rgba8 c) {
     for (int i = 0; i < 32; ++i) {
         pat96[3 * i] = c.r;
@@ -272,12 +279,29 @@ __attribute__((target("avx2"))) inline void make_pattern_avx2(uint8_t* pat96, Rg
     _mm256_store_si256(reinterpret_cast<__m256i*>(pat96 + 32), _mm256_shuffle_epi8(v, i1));
     _mm256_store_si256(reinterpret_cast<__m256i*>(pat96 + 64), _mm256_shuffle_epi8(v, i2));
 }
+
+// The colour pattern as three 64-byte vectors, byte k of vector ph being channel (k + ph) % 3,
+// made in registers: a pattern stored and reloaded at once (as pat96 is) stalls every stroke
+// on a failed store forward (two 32-byte stores, one 64-byte load).
+struct Pat512 {
+    __m512i p[3];
+};
+alignas(64) constexpr uint8_t kPhase[66] = {
+    0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2,
+    0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2};
+__attribute__((target("avx512f,avx512bw"))) inline void make_pattern512(Pat512& pat, Rgba8 c) {
+    uint32_t word;
+    std::memcpy(&word, &c, 4);
+    // vpshufb picks within each 128-bit lane; every lane holds the colour in its bytes 0..2.
+    const __m512i v = _mm512_set1_epi32(int32_t(word));
+    for (int ph = 0; ph < 3; ++ph) pat.p[ph] = _mm512_shuffle_epi8(v, _mm512_loadu_si512(kPhase + ph));
+}
 #endif
 
 // The loop over a mask's rows, written once and expanded per ISA so that the span kernel
 // inlines (a template would not inline an AVX2 kernel into a function without the target).
-#define SPT_SPANS_LOOP(SPAN, PATTERN)                                                                   \
-    alignas(32) uint8_t pat[96];                                                                      \
+#define SPT_SPANS_LOOP(SPAN, PATTERN, PAT_T)                                                            \
+    PAT_T pat;                                                                                        \
     PATTERN(pat, p.c);                                                                                \
     const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy), j1 = std::min<int64_t>(p.h, t.y1 - p.oy);   \
     uint8_t* row = t.px + (p.oy + j0 - t.y0) * int64_t(t.stride);                                     \
@@ -290,8 +314,8 @@ __attribute__((target("avx2"))) inline void make_pattern_avx2(uint8_t* pat96, Rg
     }
 
 // The same, each row clipped further to its visible columns (blend_spans_cols).
-#define SPT_SPANS_COLS_LOOP(SPAN, PATTERN)                                                              \
-    alignas(32) uint8_t pat[96];                                                                      \
+#define SPT_SPANS_COLS_LOOP(SPAN, PATTERN, PAT_T)                                                       \
+    PAT_T pat;                                                                                        \
     PATTERN(pat, p.c);                                                                                \
     const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy), j1 = std::min<int64_t>(p.h, t.y1 - p.oy);   \
     uint8_t* row = t.px + (p.oy + j0 - t.y0) * int64_t(t.stride);                                     \
@@ -302,14 +326,14 @@ __attribute__((target("avx2"))) inline void make_pattern_avx2(uint8_t* pat96, Rg
              uint32_t(3 * (cols[1] - cols[0])), p.c.a, t.slack);                                      \
     }
 
-void spans_scalar(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_scalar, make_pattern) }
+void spans_scalar(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_scalar, make_pattern, Pat96) }
 void spans_cols_scalar(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
-    SPT_SPANS_COLS_LOOP(span_scalar, make_pattern)
+    SPT_SPANS_COLS_LOOP(span_scalar, make_pattern, Pat96)
 }
 #ifdef SPT_SPAN_X86
-void spans_sse2(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_sse2, make_pattern) }
+void spans_sse2(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_sse2, make_pattern, Pat96) }
 void spans_cols_sse2(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
-    SPT_SPANS_COLS_LOOP(span_sse2, make_pattern)
+    SPT_SPANS_COLS_LOOP(span_sse2, make_pattern, Pat96)
 }
 __attribute__((target("avx2"))) inline void span_avx2_inl(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
                                                           uint32_t bytes, uint32_t a, bool slack) {
@@ -321,37 +345,39 @@ __attribute__((target("avx2"))) void span_avx2(uint8_t* dst, const uint8_t* cov,
     span_avx2_inl(dst, cov, pat, bytes, a, slack);
 }
 __attribute__((target("avx2"))) void spans_avx2(const BlendTarget& t, const PlacedSpans& p) {
-    SPT_SPANS_LOOP(span_avx2_inl, make_pattern_avx2)
+    SPT_SPANS_LOOP(span_avx2_inl, make_pattern_avx2, Pat96)
 }
 __attribute__((target("avx2"))) void spans_cols_avx2(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
-    SPT_SPANS_COLS_LOOP(span_avx2_inl, make_pattern_avx2)
+    SPT_SPANS_COLS_LOOP(span_avx2_inl, make_pattern_avx2, Pat96)
 }
-__attribute__((target("avx512f,avx512bw"))) inline void span_avx512_inl(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
+__attribute__((target("avx512f,avx512bw"))) inline void span_avx512_inl(uint8_t* dst, const uint8_t* cov, const Pat512& pat,
                                                                         uint32_t bytes, uint32_t a, bool) {
-    if (a == 255) span_avx512_t<true>(dst, cov, pat, bytes, a);
-    else span_avx512_t<false>(dst, cov, pat, bytes, a);
+    if (a == 255) span_avx512_t<true>(dst, cov, pat.p, bytes, a);
+    else span_avx512_t<false>(dst, cov, pat.p, bytes, a);
 }
 __attribute__((target("avx512f,avx512bw"))) void span_avx512(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
                                                              uint32_t bytes, uint32_t a, bool slack) {
-    span_avx512_inl(dst, cov, pat, bytes, a, slack);
+    Pat512 p;
+    for (int ph = 0; ph < 3; ++ph) p.p[ph] = _mm512_loadu_si512(pat + ph);
+    span_avx512_inl(dst, cov, p, bytes, a, slack);
 }
 __attribute__((target("avx512f,avx512bw"))) void spans_avx512(const BlendTarget& t, const PlacedSpans& p) {
-    SPT_SPANS_LOOP(span_avx512_inl, make_pattern_avx2)
+    SPT_SPANS_LOOP(span_avx512_inl, make_pattern512, Pat512)
 }
 __attribute__((target("avx512f,avx512bw"))) void spans_cols_avx512(const BlendTarget& t, const PlacedSpans& p,
                                                                    const uint8_t* cols) {
-    SPT_SPANS_COLS_LOOP(span_avx512_inl, make_pattern_avx2)
+    SPT_SPANS_COLS_LOOP(span_avx512_inl, make_pattern512, Pat512)
 }
 __attribute__((target("avx512f,avx512bw"))) void dense_avx512(uint8_t* dst, size_t stride, const uint8_t* cov, uint32_t h,
                                                               uint32_t steps, Rgba8 c) {
-    alignas(32) uint8_t pat[96];
-    make_pattern_avx2(pat, c);
+    Pat512 pat;
+    make_pattern512(pat, c);
     if (c.a == 255) {
-        if (steps == 1) dense_avx512_t<true, 1>(dst, stride, cov, h, pat, c.a);
-        else dense_avx512_t<true, 2>(dst, stride, cov, h, pat, c.a);
+        if (steps == 1) dense_avx512_t<true, 1>(dst, stride, cov, h, pat.p, c.a);
+        else dense_avx512_t<true, 2>(dst, stride, cov, h, pat.p, c.a);
     } else {
-        if (steps == 1) dense_avx512_t<false, 1>(dst, stride, cov, h, pat, c.a);
-        else dense_avx512_t<false, 2>(dst, stride, cov, h, pat, c.a);
+        if (steps == 1) dense_avx512_t<false, 1>(dst, stride, cov, h, pat.p, c.a);
+        else dense_avx512_t<false, 2>(dst, stride, cov, h, pat.p, c.a);
     }
 }
 #endif
