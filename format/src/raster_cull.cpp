@@ -187,6 +187,26 @@ SPT_CULL_TARGET inline void mark_avx512(CullBits& bits, const uint64_t* core, ui
     }
 }
 
+// mark_avx512 for the tile pass: only the two word columns of tile columns (1 and 2) are ever
+// tested there (the apron's are for narrow strokes to land in), so wide cores write no others.
+SPT_CULL_TARGET inline void mark_tile_avx512(CullBits& bits, const uint64_t* core, uint32_t words, uint32_t rows,
+                                             uint32_t j0, uint32_t j1, int64_t dx, int64_t r0) {
+    static_assert(kBias == 64 && CullBits::kTileCols == 128, "tile columns are word columns 1 and 2");
+    const uint32_t n = j1 - j0;
+    for (uint32_t k = 0; k < words; ++k) {
+        const int64_t q = dx + kBias + 64 * int64_t(k);  // word k's bit 0 lands on bit q of the rows
+        if (q <= 0 || q >= 192) continue;               // nothing in bits [64, 192)
+        const uint64_t* c = core + size_t(k) * rows + j0;
+        const int64_t wi = q >> 6, sh = q & 63;
+        if (wi == 1 && sh)
+            or_shifted_pair(&bits.w[1][r0], &bits.w[2][r0], c, n, sh);
+        else if (wi == 0)
+            or_shifted(&bits.w[1][r0], c, n, sh - 64);  // only the bits shifted out of word 0
+        else
+            or_shifted(&bits.w[wi][r0], c, n, sh);
+    }
+}
+
 // The bits of columns [a, b) within one word, a and b already clamped to [0, 64] (an empty
 // range shifts by 64, which gives 0).
 SPT_CULL_TARGET inline __m512i word_mask(__m512i a, __m512i b) {
@@ -274,7 +294,7 @@ SPT_CULL_TARGET inline uint64_t narrow_avx512(CullBits& bits, const MaskRef& mr,
 
 SPT_CULL_TARGET void tile_avx512(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks,
                                  const CullTile& t, CullPlan& plan) {
-    SPT_CULL_TILE_LOOP(mark_avx512, visible_avx512, rows_avx512, narrow_avx512)
+    SPT_CULL_TILE_LOOP(mark_tile_avx512, visible_avx512, rows_avx512, narrow_avx512)
 }
 #undef SPT_CULL_TARGET
 #pragma GCC diagnostic pop
