@@ -58,6 +58,18 @@ struct Bins {
     std::vector<uint32_t> mask_slot;
 };
 
+// Copies `rows` rows of `bytes` bytes (src_stride 0: the same row every time). A whole tile
+// row, the common case, is a fixed-size copy that the compiler inlines: a library call per
+// row cost about 1.5% of a frame.
+void copy_rows(uint8_t* dst, size_t dst_stride, const uint8_t* src, size_t src_stride, int64_t rows, size_t bytes) {
+    constexpr size_t kWhole = 3 * size_t(kTileW);
+    if (bytes == kWhole) {
+        for (int64_t y = 0; y < rows; ++y, dst += dst_stride, src += src_stride) std::memcpy(dst, src, kWhole);
+    } else {
+        for (int64_t y = 0; y < rows; ++y, dst += dst_stride, src += src_stride) std::memcpy(dst, src, bytes);
+    }
+}
+
 Bins& scratch_bins() {
     thread_local Bins b;
     return b;
@@ -199,7 +211,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             t.y1 = std::min(t.y0 + kTileH, H);
             t.slack = true;
             const size_t row_bytes = size_t(t.x1 - t.x0) * 3;
-            for (int64_t y = t.y0; y < t.y1; ++y) std::memcpy(origin + size_t(y - t.y0) * kTileStride, bg_row, row_bytes);
+            copy_rows(origin, kTileStride, bg_row, 0, t.y1 - t.y0, row_bytes);
             const uint32_t first = bins.start[tile], count = bins.start[tile + 1] - first;
             const TileItem* list = &bins.list[first];
             const MaskRef* masks = bins.masks.data();
@@ -230,8 +242,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
                     blend_spans(t, placed(it, m));
                 }
             }
-            for (int64_t y = t.y0; y < t.y1; ++y)
-                std::memcpy(canvas.row(uint32_t(y)) + 3 * t.x0, origin + size_t(y - t.y0) * kTileStride, row_bytes);
+            copy_rows(canvas.row(uint32_t(t.y0)) + 3 * t.x0, size_t(W) * 3, origin, kTileStride, t.y1 - t.y0, row_bytes);
         }
     };
 
