@@ -19,10 +19,13 @@
 //            own first-use costs, e.g. coding 2's footprint cache, included)
 //   render   Renderer::render(canvas, strokes), one thread
 //   d+r fps  1 / (decode + render)
+// and, for coding 0,
+//   frame    Reader::render_frame(0, canvas) on the open reader: what a player calls, decode and
+//            render in one (a coding-0 key frame of stamps renders straight from its records)
 // plus render with 2 threads (wall time: only meaningful on an idle machine), and checks that
 // every coding decodes to the painter's strokes and renders the painter's canvas.
 // Usage: decode_bench [runs] [--image PATH] [--max-strokes N] [--cache DIR] [--synthetic]
-//                     [--only decode0|decode1|decode2|render]   (a loop of one phase, for perf)
+//                     [--only decode0|decode1|decode2|render|frame0]   (a loop of one phase, for perf)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -122,8 +125,8 @@ struct Case {
     Coding coding;
     std::vector<uint8_t> bytes;
     std::unique_ptr<Reader> reader;
-    Frame frame;  // decoded into again by every run
-    std::vector<double> decode, live, render, total;
+    Frame decoded;  // decoded into again by every run
+    std::vector<double> decode, live, render, total, frame;
     bool ok = true;
 };
 
@@ -135,7 +138,7 @@ int main(int argc, char** argv) {
     std::string cache = std::filesystem::temp_directory_path().string();
     uint64_t max_strokes = 30000;
     bool synthetic = false;
-    std::string only;  // for profiling: "decode0", "decode1", "decode2" or "render" in a loop
+    std::string only;  // for profiling: "decode0", "decode1", "decode2", "render" or "frame0" in a loop
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
@@ -307,17 +310,18 @@ int main(int argc, char** argv) {
         Canvas cv(kW, kH);
         for (int run = 0; run < runs; ++run) {
             if (only == "render") (*renderer)->render(cv, frame.added, 1);
+            if (only == "frame0") (void)cases[0].reader->render_frame(0, cv, 1);
             for (Case& c : cases)
-                if (only == std::string("decode") + char('0' + int(c.coding))) (void)c.reader->read_frame(0, c.frame);
+                if (only == std::string("decode") + char('0' + int(c.coding))) (void)c.reader->read_frame(0, c.decoded);
         }
         return 0;
     }
 
     // ---- timing ----
-    Canvas canvas(kW, kH);
+    Canvas canvas(kW, kH), framed(kW, kH);
     for (int run = -1; run < runs; ++run) {  // run -1 warms up (footprints, page faults)
         for (Case& c : cases) {
-            Frame* f = &c.frame;
+            Frame* f = &c.decoded;
             double t0 = thread_seconds();
             const Status ds = c.reader->read_frame(0, *f);
             const double dec = thread_seconds() - t0;
@@ -333,10 +337,23 @@ int main(int argc, char** argv) {
             const Status rs = (*renderer)->render(canvas, f->added, 1);
             const double ren = thread_seconds() - t0;
             if (!rs) { std::fprintf(stderr, "%s: %s\n", c.name, rs.error().message.c_str()); return 1; }
+            // The player's call, decode and render in one (Reader::render_frame), for coding 0:
+            // its key frames render straight from their records. (Other codings go through
+            // strokes_at, which keeps the live list of the frame it decoded last: timing it
+            // again on one frame would time the render alone.)
+            double fr = 0;
+            if (c.coding == Coding::Stored) {
+                t0 = thread_seconds();
+                const Status fs = c.reader->render_frame(0, framed, 1);
+                fr = thread_seconds() - t0;
+                if (!fs) { std::fprintf(stderr, "%s: %s\n", c.name, fs.error().message.c_str()); return 1; }
+            }
             if (run < 0) {
-                c.ok = f->added == frame.added && **live == frame.added && canvas.rgb == painted.rgb;
+                c.ok = f->added == frame.added && **live == frame.added && canvas.rgb == painted.rgb &&
+                       (c.coding != Coding::Stored || framed.rgb == painted.rgb);
                 continue;
             }
+            if (c.coding == Coding::Stored) c.frame.push_back(fr);
             c.decode.push_back(dec);
             c.live.push_back(lv);
             c.render.push_back(ren);
@@ -358,6 +375,10 @@ int main(int argc, char** argv) {
                     double(c.bytes.size()) / double(std::max<size_t>(1, frame.added.size())), 1e3 * d, 1e3 * l, 1e3 * r,
                     1e3 * t, 1.0 / t, c.ok ? "yes" : "NO");
     }
+    for (const Case& c : cases)
+        if (!c.frame.empty())
+            std::printf("frame     %s: Reader::render_frame (decode + render in one, a player's call): %.2f ms, %.1f fps\n",
+                        c.name, 1e3 * median(c.frame), 1.0 / median(c.frame));
     std::printf("render 2 threads (wall): %.2f ms, %.1f fps   [%d runs, medians, thread CPU time unless noted]\n",
                 1e3 * median(two), 1.0 / median(two), runs);
     for (const Case& c : cases)

@@ -136,6 +136,9 @@ struct SpanMask {
     // for masks of one core word a row (w <= 64), the footprint: bit i of foot[j] is set when
     // column i of row j has coverage above 0.
     std::vector<uint64_t> foot;
+    // SPEC 10's fill work of a stamp with this footprint before its box is clipped to the
+    // canvas (evaluation box pixels x template samples): a bound of any such stamp's work.
+    uint64_t box_work = 0;
     size_t bytes() const {
         return rows.size() * sizeof(SpanRow) + cov3.size() + dense.size() +
                (core.size() + foot.size()) * sizeof(uint64_t) + extent.size() * sizeof(uint32_t);

@@ -5,6 +5,7 @@
 #include "byte_source.hpp"
 #include "container.hpp"
 #include "frame_coding.hpp"
+#include "render_impl.hpp"
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
 #include "validate.hpp"
@@ -48,6 +49,7 @@ public:
     }
     Status read_frame(size_t pos, Frame& out) override { return decode(pos, nullptr, out); }
     Result<const std::vector<Stroke>*> strokes_at(size_t pos) override;
+    Status render_frame(size_t pos, Canvas& canvas, unsigned threads) override;
     Result<FieldStats> field_stats(size_t pos) override {
         FieldStats fs;
         Frame f;
@@ -66,6 +68,11 @@ private:
     std::string frame_where(uint32_t index, uint64_t off) const {
         return "frame " + std::to_string(index) + " (FRAM chunk" + at(off) + ")";
     }
+    // The reader's Renderer (coding 2 frames and render_frame), made on first use.
+    Status ensure_renderer(const std::string& where, uint64_t off);
+    // render_frame's fast path: true when frame `pos` is a sound key frame of stamp records in
+    // coding 0 and has been rendered from them; false (nothing reported) otherwise.
+    bool render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads);
     // Decodes frame `pos` into f, reusing f's memory (and the reader's chunk buffer).
     Status decode(size_t pos, FieldStats* stats, Frame& f);
     void warn(Error e) { warnings_.push_back(std::move(e)); }
@@ -388,11 +395,7 @@ Status ReaderImpl::decode(size_t pos, FieldStats* stats, Frame& f) {
     if (fh.coding == uint8_t(Coding::Replay)) {
         // Coding 2 renders while it decodes (SPEC.md 7.7): an inter frame needs the live list
         // before it, which strokes_at() keeps.
-        if (!renderer_) {
-            auto r = Renderer::create(info_.header, info_.templates);
-            if (!r) return make_error(r.error().code, where + ": " + r.error().message, e.offset);
-            renderer_ = std::move(*r);
-        }
+        SPT_TRY(ensure_renderer(where, e.offset));
         ctx.header = &info_.header;
         ctx.renderer = renderer_.get();
         if (fh.type == uint8_t(FrameType::Inter)) {
@@ -409,6 +412,53 @@ Status ReaderImpl::decode(size_t pos, FieldStats* stats, Frame& f) {
     SPT_TRY(detail::decode_frame_body(FrameType(fh.type), Coding(fh.coding), c.payload.data() + 8, c.length - 8, ctx, f, nullptr));
     f.index = fh.index;
     return {};
+}
+
+Status ReaderImpl::ensure_renderer(const std::string& where, uint64_t off) {
+    if (renderer_) return {};
+    auto r = Renderer::create(info_.header, info_.templates);
+    if (!r) return make_error(r.error().code, where + ": " + r.error().message, off);
+    renderer_ = std::move(*r);
+    return {};
+}
+
+bool ReaderImpl::render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads) {
+    const FrameEntry& e = frames_[pos];
+    if (e.type != FrameType::Key || e.coding != Coding::Stored) return false;
+    Chunk c;
+    c.payload.swap(spare_payload_);
+    struct GiveBack {
+        std::vector<uint8_t>& from;
+        std::vector<uint8_t>& to;
+        ~GiveBack() { to.swap(from); }
+    } give_back{c.payload, spare_payload_};
+    // The checks of decode() and decode_stored_body(); anything unusual takes the general path.
+    detail::FrameHeader fh;
+    if (!read_chunk(e.offset, c, true) || !detail::is_type(c.type, "FRAM") || c.length < 8 ||
+        !detail::decode_frame_header(c.payload.data(), 8, c.payload_offset(), fh) || fh.index != e.index ||
+        fh.type != uint8_t(FrameType::Key) || fh.coding != uint8_t(Coding::Stored) || c.length < 12)
+        return false;
+    const uint8_t* body = c.payload.data() + 8;
+    const uint32_t added = detail::load_u32(body);
+    if (added > opts_.limits.max_strokes_per_frame || added > opts_.limits.max_live_strokes ||
+        uint64_t(c.length) - 12 != uint64_t(added) * 16)
+        return false;
+    if (!ensure_renderer("", 0)) return false;
+    // The renderer checks every record (kind, ranges) and bounds the fill work of SPEC 10.
+    return static_cast<const RendererImpl&>(*renderer_).render_stamp_records(canvas, body + 4, added, threads,
+                                                                           opts_.limits.max_fill_work);
+}
+
+Status ReaderImpl::render_frame(size_t pos, Canvas& canvas, unsigned threads) {
+    if (pos >= frames_.size())
+        return make_error(Code::InvalidArgument, "frame " + std::to_string(pos) + " does not exist (" +
+                                                     std::to_string(frames_.size()) + " frames)");
+    if (render_stamp_frame(pos, canvas, threads)) return {};
+    auto live = strokes_at(pos);
+    if (!live) return live.error();
+    const FrameEntry& e = frames_[pos];
+    SPT_TRY(ensure_renderer(frame_where(e.index, e.offset), e.offset));
+    return renderer_->render(canvas, **live, threads);
 }
 
 Result<const std::vector<Stroke>*> ReaderImpl::strokes_at(size_t pos) {

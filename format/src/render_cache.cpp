@@ -8,6 +8,7 @@
 //  - public Masks (stamp_footprint()), built only when a caller asks for one.
 // Both are built under a lock and published through atomics; readers never lock.
 #include <algorithm>
+#include <cstdlib>
 
 #include "render_impl.hpp"
 
@@ -68,6 +69,15 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
                 sm->y0 = int32_t(m.y0 + int64_t(first));
                 span_mask_make_dense(*sm);
                 span_mask_make_core(*sm);
+                {  // the bound of validate.cpp's fill_render_work for this triple
+                    const int64_t C = std::abs(int64_t(header_.orientations[orient].cos_q14));
+                    const int64_t S = std::abs(int64_t(header_.orientations[orient].sin_q14));
+                    const int64_t rx = (int64_t(ss.width) * C + int64_t(ss.height) * S) / 32768 + 1;
+                    const int64_t ry = (int64_t(ss.width) * S + int64_t(ss.height) * C) / 32768 + 1;
+                    const Template& tp = templates_[tmpl];
+                    const uint64_t k = tp.kind != TemplateKind::Bitmap && tp.supersample >= 2 ? tp.supersample : 1;
+                    sm->box_work = uint64_t(2 * rx + 1) * uint64_t(2 * ry + 1) * k * k;
+                }
                 sm->id = uint32_t(owned_spans_.size());
                 cache_bytes_.fetch_add(sm->bytes(), std::memory_order_relaxed);
                 f = sm.get();

@@ -24,6 +24,13 @@ public:
     Status render(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const override;
     size_t footprint_cache_bytes() const override { return cache_bytes_.load(std::memory_order_relaxed); }
 
+    // Renders a key frame given as n coding-0 stamp records (SPEC 6: 16 bytes each) straight
+    // into the tiles, without a Stroke list: the same bytes as render() of the decoded strokes.
+    // Returns false, having drawn nothing, when a record is not a valid stamp with a cached
+    // footprint or the strokes' fill work may exceed work_limit (SPEC 10); the caller then
+    // takes the general path, which reports what is wrong.
+    bool render_stamp_records(Canvas& canvas, const uint8_t* records, size_t n, unsigned threads,
+                              uint64_t work_limit) const;
     // Range and reference checks of one stroke (SPEC 8.7).
     Status check(const Stroke& s) const;
     // check(s) of a stamp, without the message: true when it passes.

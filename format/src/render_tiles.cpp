@@ -13,6 +13,7 @@
 #include <string>
 #include <thread>
 
+#include "byte_io.hpp"
 #include "raster_cull.hpp"
 #include "render_impl.hpp"
 
@@ -75,48 +76,64 @@ Bins& scratch_bins() {
     return b;
 }
 
-}  // namespace
-
-Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes) const {
-    return render(canvas, strokes, 1);
-}
-
-Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const {
-    const int64_t W = header_.width, H = header_.height;
-    canvas.width = header_.width;
-    canvas.height = header_.height;
-    canvas.rgb.resize(size_t(W) * size_t(H) * 3);  // every byte is written by its tile
-    const int64_t tiles_x = (W + kTileW - 1) / kTileW, tiles_y = (H + kTileH - 1) / kTileH;
-    const size_t tiles = size_t(tiles_x * tiles_y);
-
-    // Check and prepare every stroke (this also builds the footprints, so the tile pass only
-    // reads shared state). On a bad stroke, the strokes before it are still drawn, as drawing
-    // them one by one would have done, and the error names it.
-    Bins& bins = scratch_bins();
-    bins.masks.clear();
-    bins.mask_ids.clear();
-    // Items are counted per tile as they are made (start[t + 1]: items of tile t so far).
-    bins.start.assign(tiles + 1, 0);
-    if (bins.items.size() < strokes.size()) {
-        bins.items.resize(strokes.size());
-        bins.range.resize(4 * strokes.size());
+// Fills the tile lists of one frame: items are made stroke by stroke and counted per tile as
+// they are (start[t + 1]: items of tile t so far), then sorted into one flat list by tile
+// (counting sort; drawing order kept within a tile).
+class Binner {
+public:
+    Binner(Bins& b, int64_t W, int64_t H, size_t strokes) : b_(b), W_(W), H_(H), tiles_x_((W + kTileW - 1) / kTileW) {
+        tiles_ = size_t(tiles_x_ * ((H + kTileH - 1) / kTileH));
+        b_.masks.clear();
+        b_.mask_ids.clear();
+        b_.start.assign(tiles_ + 1, 0);
+        if (b_.items.size() < strokes) {
+            b_.items.resize(strokes);
+            b_.range.resize(4 * strokes);
+        }
     }
-    size_t n = 0;
-    auto add = [&](const TileItem& it, int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
-        x0 = std::max<int64_t>(x0, 0); x1 = std::min<int64_t>(x1, W - 1);
-        y0 = std::max<int64_t>(y0, 0); y1 = std::min<int64_t>(y1, H - 1);
+    // Resets the mask slots (ready for the next frame) if finish() did not.
+    ~Binner() { release_masks(); }
+
+    // Adds an item whose coverage lies in the inclusive canvas box.
+    void add(const TileItem& it, int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
+        x0 = std::max<int64_t>(x0, 0); x1 = std::min<int64_t>(x1, W_ - 1);
+        y0 = std::max<int64_t>(y0, 0); y1 = std::min<int64_t>(y1, H_ - 1);
         if (x0 > x1 || y0 > y1) return;
         const uint32_t tx0 = uint32_t(x0 / kTileW), tx1 = uint32_t(x1 / kTileW);
         const uint32_t ty0 = uint32_t(y0 / kTileH), ty1 = uint32_t(y1 / kTileH);
-        bins.items[n] = it;
-        uint16_t* r = &bins.range[4 * n++];
+        b_.items[n_] = it;
+        uint16_t* r = &b_.range[4 * n_++];
         r[0] = uint16_t(tx0); r[1] = uint16_t(tx1); r[2] = uint16_t(ty0); r[3] = uint16_t(ty1);
         for (uint32_t ty = ty0; ty <= ty1; ++ty)
-            for (uint32_t tx = tx0; tx <= tx1; ++tx) ++bins.start[size_t(ty) * size_t(tiles_x) + tx + 1];
-    };
-    auto mask_index = [&](const SpanMask& f) {
-        if (f.id >= bins.mask_slot.size()) bins.mask_slot.resize(size_t(f.id) + 1, 0);
-        uint32_t& slot = bins.mask_slot[f.id];
+            for (uint32_t tx = tx0; tx <= tx1; ++tx) ++b_.start[size_t(ty) * size_t(tiles_x_) + tx + 1];
+    }
+    // Adds a valid stamp at Q4 (x, y) whose cached footprint is f (its box is the mask's).
+    void add_stamp(const SpanMask& f, int32_t x, int32_t y, Rgba8 c) {
+        if (c.a == 0 || f.rows.empty()) return;
+        TileItem it;
+        it.c = c;
+        it.ox = int32_t(Renderer::stamp_pixel(x) + f.x0);
+        it.oy = int32_t(Renderer::stamp_pixel(y) + f.y0);
+        it.mask = mask_index(f);
+        add(it, it.ox, it.oy, int64_t(it.ox) + f.w - 1, int64_t(it.oy) + int64_t(f.rows.size()) - 1);
+    }
+    // Sorts the items into the tile lists.
+    void finish() {
+        release_masks();
+        for (size_t t = 0; t < tiles_; ++t) b_.start[t + 1] += b_.start[t];
+        b_.list.resize(b_.start[tiles_]);
+        std::vector<uint32_t> fill(b_.start.begin(), b_.start.end() - 1);
+        for (size_t k = 0; k < n_; ++k) {
+            const uint16_t* r = &b_.range[4 * k];
+            for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
+                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) b_.list[fill[size_t(ty) * size_t(tiles_x_) + tx]++] = b_.items[k];
+        }
+    }
+
+private:
+    uint32_t mask_index(const SpanMask& f) {
+        if (f.id >= b_.mask_slot.size()) b_.mask_slot.resize(size_t(f.id) + 1, 0);
+        uint32_t& slot = b_.mask_slot[f.id];
         if (!slot) {
             MaskRef m;
             m.rows = f.rows.data();
@@ -132,62 +149,35 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
                 m.dense = f.dense.data();
                 m.dense_steps = f.dense_steps;
             }
-            bins.masks.push_back(m);
-            bins.mask_ids.push_back(f.id);
-            slot = uint32_t(bins.masks.size());
+            b_.masks.push_back(m);
+            b_.mask_ids.push_back(f.id);
+            slot = uint32_t(b_.masks.size());
         }
         return slot - 1;
-    };
-    Status error;
-    for (size_t i = 0; i < strokes.size(); ++i) {
-        const Stroke& s = strokes[i];
-        TileItem it;
-        // The common case first: a valid stamp with a cached footprint (its box is the mask's).
-        if (s.kind == StrokeKind::Stamp && stamp_valid(s.stamp)) {
-            const StampStroke& st = s.stamp;
-            if (const SpanMask* f = spans(st.set, st.tmpl, st.orient)) {
-                if (st.color.a == 0 || f->rows.empty()) continue;
-                it.c = st.color;
-                it.ox = int32_t(stamp_pixel(st.x) + f->x0);
-                it.oy = int32_t(stamp_pixel(st.y) + f->y0);
-                it.mask = mask_index(*f);
-                add(it, it.ox, it.oy, int64_t(it.ox) + f->w - 1, int64_t(it.oy) + int64_t(f->rows.size()) - 1);
-                continue;
-            }
-        }
-        if (Status st = check(s); !st) {
-            Error e = st.error();
-            e.message = "stroke " + std::to_string(i) + ": " + e.message;
-            error = e;
-            break;
-        }
-        it.c = s.color();
-        if (it.c.a == 0) continue;
-        it.ox = int32_t(i);
-        it.mask = TileItem::kNoMask;
-        int64_t x0, y0, x1, y1;
-        stroke_box(s, x0, y0, x1, y1);
-        add(it, x0, y0, x1, y1);
     }
-    for (uint32_t id : bins.mask_ids) bins.mask_slot[id] = 0;  // ready for the next frame
-
-    // Counting sort of (tile, item) pairs: one flat list, drawing order kept within a tile.
-    for (size_t t = 0; t < tiles; ++t) bins.start[t + 1] += bins.start[t];
-    bins.list.resize(bins.start[tiles]);
-    {
-        std::vector<uint32_t> fill(bins.start.begin(), bins.start.end() - 1);
-        for (size_t k = 0; k < n; ++k) {
-            const uint16_t* r = &bins.range[4 * k];
-            for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
-                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) bins.list[fill[size_t(ty) * size_t(tiles_x) + tx]++] = bins.items[k];
-        }
+    void release_masks() {
+        for (uint32_t id : b_.mask_ids) b_.mask_slot[id] = 0;
+        b_.mask_ids.clear();
     }
 
+    Bins& b_;
+    int64_t W_, H_, tiles_x_;
+    size_t tiles_ = 0, n_ = 0;
+};
+
+// The tile pass: renders every tile of bins onto the canvas (already sized). Items without a
+// mask are drawn from strokes[it.ox].
+void draw_tiles(const RendererImpl& r, Canvas& canvas, const Bins& bins, const std::vector<Stroke>* strokes,
+                unsigned threads) {
+    const int64_t W = canvas.width, H = canvas.height;
+    const int64_t tiles_x = (W + kTileW - 1) / kTileW, tiles_y = (H + kTileH - 1) / kTileH;
+    const size_t tiles = size_t(tiles_x * tiles_y);
+    const Rgb8 bg = r.header().background;
     uint8_t bg_row[3 * kTileW];
     for (int64_t i = 0; i < kTileW; ++i) {
-        bg_row[3 * i] = header_.background.r;
-        bg_row[3 * i + 1] = header_.background.g;
-        bg_row[3 * i + 2] = header_.background.b;
+        bg_row[3 * i] = bg.r;
+        bg_row[3 * i + 1] = bg.g;
+        bg_row[3 * i + 2] = bg.b;
     }
 
     const DenseKernel dense_fn = dense_kernel();
@@ -213,7 +203,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             const size_t row_bytes = size_t(t.x1 - t.x0) * 3;
             copy_rows(origin, kTileStride, bg_row, 0, t.y1 - t.y0, row_bytes);
             const uint32_t first = bins.start[tile], count = bins.start[tile + 1] - first;
-            const TileItem* list = &bins.list[first];
+            const TileItem* list = bins.list.data() + first;
             const MaskRef* masks = bins.masks.data();
             CullTile ct;
             ct.x0 = t.x0; ct.y0 = t.y0; ct.x1 = t.x1; ct.y1 = t.y1;
@@ -226,7 +216,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
             for (uint32_t i = 0; i < count; ++i) {
                 const TileItem& it = list[i];
                 if (it.mask == TileItem::kNoMask) {
-                    draw_into(t, strokes[uint32_t(it.ox)]);
+                    r.draw_into(t, (*strokes)[uint32_t(it.ox)]);
                     continue;
                 }
                 const MaskRef& m = masks[it.mask];
@@ -258,7 +248,83 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     }
     worker();
     for (auto& th : pool) th.join();
+}
+
+void size_canvas(Canvas& canvas, const Header& h) {
+    canvas.width = h.width;
+    canvas.height = h.height;
+    canvas.rgb.resize(size_t(h.width) * size_t(h.height) * 3);  // every byte is written by its tile
+}
+
+}  // namespace
+
+Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes) const {
+    return render(canvas, strokes, 1);
+}
+
+Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const {
+    // Check and prepare every stroke (this also builds the footprints, so the tile pass only
+    // reads shared state). On a bad stroke, the strokes before it are still drawn, as drawing
+    // them one by one would have done, and the error names it.
+    Bins& bins = scratch_bins();
+    Binner binner(bins, header_.width, header_.height, strokes.size());
+    Status error;
+    for (size_t i = 0; i < strokes.size(); ++i) {
+        const Stroke& s = strokes[i];
+        // The common case first: a valid stamp with a cached footprint.
+        if (s.kind == StrokeKind::Stamp && stamp_valid(s.stamp)) {
+            const StampStroke& st = s.stamp;
+            if (const SpanMask* f = spans(st.set, st.tmpl, st.orient)) {
+                binner.add_stamp(*f, st.x, st.y, st.color);
+                continue;
+            }
+        }
+        if (Status st = check(s); !st) {
+            Error e = st.error();
+            e.message = "stroke " + std::to_string(i) + ": " + e.message;
+            error = e;
+            break;
+        }
+        TileItem it;
+        it.c = s.color();
+        if (it.c.a == 0) continue;
+        it.ox = int32_t(i);
+        it.mask = TileItem::kNoMask;
+        int64_t x0, y0, x1, y1;
+        stroke_box(s, x0, y0, x1, y1);
+        binner.add(it, x0, y0, x1, y1);
+    }
+    binner.finish();
+    size_canvas(canvas, header_);
+    draw_tiles(*this, canvas, bins, &strokes, threads);
     return error;
+}
+
+bool RendererImpl::render_stamp_records(Canvas& canvas, const uint8_t* records, size_t n, unsigned threads,
+                                        uint64_t work_limit) const {
+    Bins& bins = scratch_bins();
+    Binner binner(bins, header_.width, header_.height, n);
+    uint64_t work = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const uint8_t* q = records + 16 * i;  // SPEC 6: kind 0, set, template, orientation, x, y, RGBA
+        StampStroke st;
+        st.set = q[1];
+        st.tmpl = q[2];
+        st.orient = q[3];
+        st.x = int32_t(detail::load_u32(q + 4));
+        st.y = int32_t(detail::load_u32(q + 8));
+        st.color = Rgba8{q[12], q[13], q[14], q[15]};
+        if (q[0] != 0 || !stamp_valid(st)) return false;
+        const SpanMask* f = spans(st.set, st.tmpl, st.orient);
+        if (!f) return false;
+        work += f->box_work;
+        if (work > work_limit) return false;
+        binner.add_stamp(*f, st.x, st.y, st.color);
+    }
+    binner.finish();
+    size_canvas(canvas, header_);
+    draw_tiles(*this, canvas, bins, nullptr, threads);
+    return true;
 }
 
 }  // namespace spt

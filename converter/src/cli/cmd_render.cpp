@@ -136,9 +136,7 @@ int cmd_render(int argc, char** argv) {
     if (todo.empty() || todo.front() > last)
         return fail(path + ": has frames 0-" + std::to_string(last) + "; nothing to render in that range");
 
-    auto rc = Renderer::create(h, r.info().templates);
-    if (!rc) return fail(io::describe_error(path, rc.error()));
-    const Renderer& renderer = **rc;
+    if (auto rc = Renderer::create(h, r.info().templates); !rc) return fail(io::describe_error(path, rc.error()));
     Canvas canvas(h.width, h.height, h.background);
 
     VideoOut vout;
@@ -149,15 +147,11 @@ int cmd_render(int argc, char** argv) {
     io::Progress progress(mode, "render", double(todo.size()));
     size_t done = 0;
     for (long f : todo) {
-        auto live = r.strokes_at(size_t(f));
-        if (!live) {
+        // Decode and render in one: a key frame of stamps in coding 0 renders straight from its
+        // records; other frames through the reader's live list.
+        if (Status s = r.render_frame(size_t(f), canvas); !s) {
             if (video) vout.discard();
-            return fail(io::frame_error(r, size_t(f), path, live.error()));
-        }
-        Status s = renderer.render(canvas, **live);
-        if (!s) {
-            if (video) vout.discard();
-            return fail(path + ": " + io::frame_place(r, size_t(f)) + ": cannot render: " + s.error().message);
+            return fail(io::frame_error(r, size_t(f), path, s.error()));
         }
         if (video) {
             vout.write(canvas);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "spt/limits.hpp"
+#include "spt/render.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
 #include "spt/writer.hpp"
@@ -55,6 +56,12 @@ public:
     // The live stroke list after applying frames up to `frame_pos`, decoding from the nearest
     // key frame at or before it. Sequential calls are incremental.
     virtual Result<const std::vector<Stroke>*> strokes_at(size_t frame_pos) = 0;
+    // Renders frame `frame_pos` onto `canvas`: exactly Renderer::render of strokes_at(frame_pos)
+    // with a Renderer of this file's header and templates (the reader keeps one), with `threads`
+    // threads (0: one per hardware thread). A player's call: a key frame of stamps in coding 0
+    // is rendered straight from its records, without building its stroke list; other frames go
+    // through strokes_at (and move its incremental state). Errors are those strokes_at reports.
+    virtual Status render_frame(size_t frame_pos, Canvas& canvas, unsigned threads = 1) = 0;
     // Decodes one frame and reports where its body's bits go, per field.
     virtual Result<FieldStats> field_stats(size_t frame_pos) = 0;
     // Size of the file or buffer in bytes.
