@@ -23,7 +23,9 @@
 //   frame    Reader::render_frame(0, canvas) on the open reader: what a player calls, decode and
 //            render in one (a coding-0 key frame of stamps renders straight from its records)
 // plus render with 2 threads (wall time: only meaningful on an idle machine), and checks that
-// every coding decodes to the painter's strokes and renders the painter's canvas.
+// every coding decodes to the painter's strokes and renders the painter's canvas; then
+// playback: a player showing a coding-0 stream of 8 such key frames (the painting moved a few
+// pixels per frame) with Reader::render_frame, frame after frame (the frames per second).
 // Usage: decode_bench [runs] [--image PATH] [--max-strokes N] [--cache DIR] [--synthetic]
 //                     [--only decode0|decode1|decode2|render|frame0]   (a loop of one phase, for perf)
 #include <algorithm>
@@ -83,13 +85,15 @@ std::vector<uint8_t> read_bytes(const std::string& path) {
 }
 
 // Writes `f` with `coding` to `path` and returns the file's bytes (empty on failure).
-std::vector<uint8_t> write(const std::string& path, const StreamInfo& info, const Frame& f, Coding coding,
-                           Coding* used) {
+std::vector<uint8_t> write(const std::string& path, const StreamInfo& info, const std::vector<Frame>& frames,
+                           Coding coding, Coding* used) {
     WriterOptions wo;
     wo.coding = coding;
     auto w = Writer::create(path, info, wo);
     if (!w) { std::fprintf(stderr, "%s\n", w.error().message.c_str()); return {}; }
-    Status s = (*w)->append(f);
+    Status s;
+    for (const Frame& f : frames)
+        if (s) s = (*w)->append(f);
     if (s) s = (*w)->finish();
     if (!s) { std::fprintf(stderr, "%s\n", s.error().message.c_str()); return {}; }
     auto bytes = read_bytes(path);
@@ -98,6 +102,10 @@ std::vector<uint8_t> write(const std::string& path, const StreamInfo& info, cons
         *used = r ? (*r)->frames()[0].coding : Coding::Stored;
     }
     return bytes;
+}
+std::vector<uint8_t> write(const std::string& path, const StreamInfo& info, const Frame& f, Coding coding,
+                           Coding* used) {
+    return write(path, info, std::vector<Frame>{f}, coding, used);
 }
 
 // Painter-like stamps without the painter's image: coarse strokes first, then finer ones, with
@@ -306,14 +314,18 @@ int main(int argc, char** argv) {
     }
     std::filesystem::remove(tmp + ".spt");
 
-    if (!only.empty()) {  // a profiling loop over one phase
+    if (!only.empty()) {  // a loop over one phase (for perf), with the median time of a run
         Canvas cv(kW, kH);
+        std::vector<double> t;
         for (int run = 0; run < runs; ++run) {
+            const double t0 = thread_seconds();
             if (only == "render") (*renderer)->render(cv, frame.added, 1);
             if (only == "frame0") (void)cases[0].reader->render_frame(0, cv, 1);
             for (Case& c : cases)
                 if (only == std::string("decode") + char('0' + int(c.coding))) (void)c.reader->read_frame(0, c.decoded);
+            t.push_back(thread_seconds() - t0);
         }
+        std::printf("%s: %.3f ms (median of %d runs, thread CPU time)\n", only.c_str(), 1e3 * median(t), runs);
         return 0;
     }
 
@@ -381,6 +393,52 @@ int main(int argc, char** argv) {
                         c.name, 1e3 * median(c.frame), 1.0 / median(c.frame));
     std::printf("render 2 threads (wall): %.2f ms, %.1f fps   [%d runs, medians, thread CPU time unless noted]\n",
                 1e3 * median(two), 1.0 / median(two), runs);
+
+    // ---- playback: what a player of a stream of such key frames sustains ----
+    // kPlay key frames in one coding-0 file, frame k the painting moved by (3k, 2k) pixels (every
+    // frame's bytes differ; the work per frame is the same), shown in order with
+    // Reader::render_frame on one reader, `runs` passes. The timings above alternate codings and
+    // renderers, so each phase starts with caches full of the others' data; here, as in a player,
+    // one frame follows another.
+    {
+        constexpr uint32_t kPlay = 8;
+        std::vector<Frame> play;
+        for (uint32_t k = 0; k < kPlay; ++k) {
+            Frame f;
+            f.index = k;
+            f.type = FrameType::Key;
+            f.added = frame.added;
+            for (Stroke& st : f.added)
+                if (st.kind == StrokeKind::Stamp) {
+                    st.stamp.x += int32_t(16 * 3 * k);
+                    st.stamp.y += int32_t(16 * 2 * k);
+                }
+            play.push_back(std::move(f));
+        }
+        Coding used;
+        const std::vector<uint8_t> bytes = write(tmp + ".play.spt", info, play, Coding::Stored, &used);
+        std::filesystem::remove(tmp + ".play.spt");
+        if (bytes.empty()) return 1;
+        auto r = Reader::open_memory(bytes.data(), bytes.size());
+        if (!r) { std::fprintf(stderr, "%s\n", r.error().message.c_str()); return 1; }
+        Canvas shown(kW, kH), want(kW, kH);
+        bool same = true;
+        for (uint32_t k = 0; k < kPlay; ++k) {  // correctness first (and warm-up)
+            if (!(*r)->render_frame(k, shown, 1) || !(*renderer)->render(want, play[k].added, 1)) return 1;
+            same = same && shown.rgb == want.rgb;
+        }
+        std::vector<double> t;
+        for (int run = 0; run < runs; ++run)
+            for (uint32_t k = 0; k < kPlay; ++k) {
+                const double t0 = thread_seconds();
+                (void)(*r)->render_frame(k, shown, 1);
+                t.push_back(thread_seconds() - t0);
+            }
+        std::printf("playback  %u key frames, coding 0, Reader::render_frame in order: %.2f ms a frame, %.1f fps  "
+                    "(frames = render of their strokes: %s)\n",
+                    kPlay, 1e3 * median(t), 1.0 / median(t), same ? "yes" : "NO");
+        if (!same) return 1;
+    }
     for (const Case& c : cases)
         if (!c.ok) return 1;
     return 0;
