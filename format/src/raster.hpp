@@ -118,7 +118,6 @@ struct SpanRow {
 // pairs in the lane order of the kernel (raster_span.cpp: span_mask_make_dense).
 constexpr uint32_t kDenseStep = 64, kDenseMaxSteps = 2;
 struct SpanMask {
-    uint32_t id = 0;            // its number among a renderer's cached masks
     int32_t x0 = 0, y0 = 0;     // offset of column 0 / row 0 (from the stamp's centre pixel)
     uint32_t w = 0;             // columns: every span lies in [0, w)
     std::vector<SpanRow> rows;  // row j is y0 + j

@@ -78,7 +78,6 @@ const SpanMask* RendererImpl::spans(uint8_t set, uint8_t tmpl, uint8_t orient) c
                     const uint64_t k = tp.kind != TemplateKind::Bitmap && tp.supersample >= 2 ? tp.supersample : 1;
                     sm->box_work = uint64_t(2 * rx + 1) * uint64_t(2 * ry + 1) * k * k;
                 }
-                sm->id = uint32_t(owned_spans_.size());
                 cache_bytes_.fetch_add(sm->bytes(), std::memory_order_relaxed);
                 f = sm.get();
                 owned_spans_.push_back(std::move(sm));

@@ -50,10 +50,14 @@ public:
 
     const Header& header() const { return header_; }
 
-private:
+    // The header's (set, template, orientation) triples; a stamp's footprint slot is
+    // slot_index(set, tmpl, orient) < triples().
+    size_t triples() const { return header_.sets.size() * templates_.size() * header_.orientations.size(); }
     size_t slot_index(uint8_t set, uint8_t tmpl, uint8_t orient) const {
         return (size_t(set) * templates_.size() + tmpl) * header_.orientations.size() + orient;
     }
+
+private:
     void draw_map(const raster::BlendTarget& t, const raster::InverseMap& m, const Template& tp, Rgba8 c) const;
     void draw_curve(const raster::BlendTarget& t, const CurveStroke& s) const;
 

@@ -48,18 +48,28 @@ static_assert(kTileW == CullBits::kTileCols && kTileH == CullBits::kRows && kApr
 // stroke overwrites completely are skipped, so the bytes are the same (SPEC 8.6 notes).
 
 // Every stroke prepared for the tiles: a stamp with a cached footprint as a TileItem of its
-// mask (masks: the frame's table; mask_slot: SpanMask::id -> table index + 1, reset after each
-// frame), anything else as a TileItem without mask, drawn by draw_into(). Items are copied
-// into every tile's list (16 bytes each), so that a tile reads its strokes sequentially, twice
-// (culling, then drawing); lists of item numbers measured slower.
+// mask (masks: the frame's table of the footprints it uses), anything else as a TileItem
+// without mask, drawn by draw_into(). Items are copied into every tile's list (16 bytes each),
+// so that a tile reads its strokes sequentially, twice (culling, then drawing); lists of item
+// numbers measured slower.
+// What binning needs of a stamp's footprint, found once a frame per (set, template,
+// orientation) triple: kind_slot[triple] is an index + 1 into kinds (0: not seen in this
+// frame; reset through kind_triples after each frame).
+struct StampKind {
+    int32_t x0 = 0, y0 = 0;  // SpanMask::x0, y0
+    int32_t w1 = 0, h1 = 0;  // columns - 1, rows - 1 (h1 < 0: an empty footprint)
+    uint32_t mask = 0;       // index into Bins::masks
+    uint64_t work = 0;       // SpanMask::box_work
+};
 struct Bins {
     std::vector<TileItem> items;
     std::vector<uint16_t> range;  // per item: first and last tile column, first and last tile row
     std::vector<uint32_t> start;  // tiles + 1 offsets into list
-    std::vector<TileItem> list;   // the items of each tile, in drawing order
+    std::vector<TileItem> list;   // the items of each tile, in drawing order (and a scratch slot)
     std::vector<MaskRef> masks;
-    std::vector<uint32_t> mask_ids;   // SpanMask::id of each table entry
-    std::vector<uint32_t> mask_slot;
+    std::vector<StampKind> kinds;
+    std::vector<uint32_t> kind_triples;
+    std::vector<uint32_t> kind_slot;
 };
 
 // Copies `rows` rows of `bytes` bytes (src_stride 0: the same row every time). A whole tile
@@ -92,85 +102,128 @@ Bins& scratch_bins() {
 // (counting sort; drawing order kept within a tile).
 class Binner {
 public:
-    Binner(Bins& b, int64_t W, int64_t H, size_t strokes) : b_(b), W_(W), H_(H), tiles_x_((W + kTileW - 1) / kTileW) {
-        tiles_ = size_t(tiles_x_ * ((H + kTileH - 1) / kTileH));
+    Binner(const RendererImpl& r, Bins& b, size_t strokes)
+        : r_(r), b_(b), W_(r.header().width), H_(r.header().height), tiles_x_((W_ + kTileW - 1) / kTileW) {
+        tiles_ = size_t(tiles_x_) * size_t((H_ + kTileH - 1) / kTileH);
         b_.masks.clear();
-        b_.mask_ids.clear();
         b_.start.assign(tiles_ + 1, 0);
         if (b_.items.size() < strokes) {
             b_.items.resize(strokes);
             b_.range.resize(4 * strokes);
         }
+        if (b_.kind_slot.size() < r.triples()) b_.kind_slot.resize(r.triples(), 0);
     }
-    // Resets the mask slots (ready for the next frame) if finish() did not.
-    ~Binner() { release_masks(); }
+    // Clears the triple slots, ready for the next frame.
+    ~Binner() {
+        for (uint32_t t : b_.kind_triples) b_.kind_slot[t] = 0;
+        b_.kind_triples.clear();
+        b_.kinds.clear();
+    }
 
+    // What binning needs of a valid stamp triple's footprint; nullptr when it is not cached
+    // (the stamp is then drawn from its inverse map).
+    const StampKind* kind(uint32_t set, uint32_t tmpl, uint32_t orient) {
+        const size_t t = r_.slot_index(uint8_t(set), uint8_t(tmpl), uint8_t(orient));
+        if (const uint32_t k = b_.kind_slot[t]) return &b_.kinds[k - 1];
+        return add_kind(t, set, tmpl, orient);
+    }
+    // Adds a valid stamp at Q4 (x, y) of kind k.
+    void add_stamp(const StampKind& k, int32_t x, int32_t y, Rgba8 c) {
+        if (c.a == 0 || k.h1 < 0) return;
+        TileItem it;
+        it.c = c;
+        it.ox = Renderer::stamp_pixel(x) + k.x0;
+        it.oy = Renderer::stamp_pixel(y) + k.y0;
+        it.mask = k.mask;
+        add(it, it.ox, it.oy, int64_t(it.ox) + k.w1, int64_t(it.oy) + k.h1);
+    }
     // Adds an item whose coverage lies in the inclusive canvas box.
     void add(const TileItem& it, int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
         x0 = std::max<int64_t>(x0, 0); x1 = std::min<int64_t>(x1, W_ - 1);
         y0 = std::max<int64_t>(y0, 0); y1 = std::min<int64_t>(y1, H_ - 1);
         if (x0 > x1 || y0 > y1) return;
-        const uint32_t tx0 = uint32_t(x0 / kTileW), tx1 = uint32_t(x1 / kTileW);
-        const uint32_t ty0 = uint32_t(y0 / kTileH), ty1 = uint32_t(y1 / kTileH);
+        // Non-negative now: unsigned division is a shift.
+        const uint32_t tx0 = uint32_t(x0) / uint32_t(kTileW), tx1 = uint32_t(x1) / uint32_t(kTileW);
+        const uint32_t ty0 = uint32_t(y0) / uint32_t(kTileH), ty1 = uint32_t(y1) / uint32_t(kTileH);
         b_.items[n_] = it;
         uint16_t* r = &b_.range[4 * n_++];
         r[0] = uint16_t(tx0); r[1] = uint16_t(tx1); r[2] = uint16_t(ty0); r[3] = uint16_t(ty1);
+        const uint32_t right = tx1 - tx0, down = ty1 - ty0;
+        if (right <= 1 && down <= 1) {
+            // Up to 2 x 2 tiles (any stroke no bigger than a tile): counted without a branch on
+            // how many, which mispredicted for the third of the strokes that cross a tile edge.
+            uint32_t* c = &b_.start[size_t(ty0) * size_t(tiles_x_) + tx0 + 1];
+            const size_t d = down * size_t(tiles_x_);
+            c[0] += 1;
+            c[right] += right;
+            c[d] += down;
+            c[d + right] += down & right;
+            return;
+        }
         for (uint32_t ty = ty0; ty <= ty1; ++ty)
             for (uint32_t tx = tx0; tx <= tx1; ++tx) ++b_.start[size_t(ty) * size_t(tiles_x_) + tx + 1];
     }
-    // Adds a valid stamp at Q4 (x, y) whose cached footprint is f (its box is the mask's).
-    void add_stamp(const SpanMask& f, int32_t x, int32_t y, Rgba8 c) {
-        if (c.a == 0 || f.rows.empty()) return;
-        TileItem it;
-        it.c = c;
-        it.ox = int32_t(Renderer::stamp_pixel(x) + f.x0);
-        it.oy = int32_t(Renderer::stamp_pixel(y) + f.y0);
-        it.mask = mask_index(f);
-        add(it, it.ox, it.oy, int64_t(it.ox) + f.w - 1, int64_t(it.oy) + int64_t(f.rows.size()) - 1);
-    }
     // Sorts the items into the tile lists.
     void finish() {
-        release_masks();
         for (size_t t = 0; t < tiles_; ++t) b_.start[t + 1] += b_.start[t];
-        b_.list.resize(b_.start[tiles_]);
+        const uint32_t scratch = b_.start[tiles_];  // a slot past the lists: the writes for no tile
+        b_.list.resize(size_t(scratch) + 1);
         std::vector<uint32_t> fill(b_.start.begin(), b_.start.end() - 1);
+        TileItem* list = b_.list.data();
         for (size_t k = 0; k < n_; ++k) {
             const uint16_t* r = &b_.range[4 * k];
+            const TileItem item = b_.items[k];
+            const uint32_t right = uint32_t(r[1] - r[0]), down = uint32_t(r[3] - r[2]);
+            if (right <= 1 && down <= 1) {  // as in add()
+                uint32_t* f = &fill[size_t(r[2]) * size_t(tiles_x_) + r[0]];
+                const size_t d = down * size_t(tiles_x_);
+                list[f[0]++] = item;
+                list[right ? f[right] : scratch] = item;
+                f[right] += right;
+                list[down ? f[d] : scratch] = item;
+                f[d] += down;
+                list[(down & right) ? f[d + right] : scratch] = item;
+                f[d + right] += down & right;
+                continue;
+            }
             for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
-                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) b_.list[fill[size_t(ty) * size_t(tiles_x_) + tx]++] = b_.items[k];
+                for (uint32_t tx = r[0]; tx <= r[1]; ++tx) list[fill[size_t(ty) * size_t(tiles_x_) + tx]++] = item;
         }
     }
 
 private:
-    uint32_t mask_index(const SpanMask& f) {
-        if (f.id >= b_.mask_slot.size()) b_.mask_slot.resize(size_t(f.id) + 1, 0);
-        uint32_t& slot = b_.mask_slot[f.id];
-        if (!slot) {
-            MaskRef m;
-            m.rows = f.rows.data();
-            m.cov3 = f.cov3.data();
-            m.h = uint32_t(f.rows.size());
-            if (!f.extent.empty()) {
-                m.core = f.core.data();
-                m.extent = f.extent.data();
-                m.core_words = f.core_words;
-                if (!f.foot.empty()) m.foot = f.foot.data();
-            }
-            if (f.dense_steps) {
-                m.dense = f.dense.data();
-                m.dense_steps = f.dense_steps;
-            }
-            b_.masks.push_back(m);
-            b_.mask_ids.push_back(f.id);
-            slot = uint32_t(b_.masks.size());
+    [[gnu::noinline]] const StampKind* add_kind(size_t t, uint32_t set, uint32_t tmpl, uint32_t orient) {
+        const SpanMask* f = r_.spans(uint8_t(set), uint8_t(tmpl), uint8_t(orient));
+        if (!f) return nullptr;
+        StampKind k;
+        k.x0 = f->x0;
+        k.y0 = f->y0;
+        k.w1 = int32_t(f->w) - 1;
+        k.h1 = int32_t(f->rows.size()) - 1;
+        k.mask = uint32_t(b_.masks.size());
+        k.work = f->box_work;
+        MaskRef m;
+        m.rows = f->rows.data();
+        m.cov3 = f->cov3.data();
+        m.h = uint32_t(f->rows.size());
+        if (!f->extent.empty()) {
+            m.core = f->core.data();
+            m.extent = f->extent.data();
+            m.core_words = f->core_words;
+            if (!f->foot.empty()) m.foot = f->foot.data();
         }
-        return slot - 1;
-    }
-    void release_masks() {
-        for (uint32_t id : b_.mask_ids) b_.mask_slot[id] = 0;
-        b_.mask_ids.clear();
+        if (f->dense_steps) {
+            m.dense = f->dense.data();
+            m.dense_steps = f->dense_steps;
+        }
+        b_.masks.push_back(m);
+        b_.kinds.push_back(k);
+        b_.kind_triples.push_back(uint32_t(t));
+        b_.kind_slot[t] = uint32_t(b_.kinds.size());
+        return &b_.kinds.back();
     }
 
+    const RendererImpl& r_;
     Bins& b_;
     int64_t W_, H_, tiles_x_;
     size_t tiles_ = 0, n_ = 0;
@@ -278,15 +331,15 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     // reads shared state). On a bad stroke, the strokes before it are still drawn, as drawing
     // them one by one would have done, and the error names it.
     Bins& bins = scratch_bins();
-    Binner binner(bins, header_.width, header_.height, strokes.size());
+    Binner binner(*this, bins, strokes.size());
     Status error;
     for (size_t i = 0; i < strokes.size(); ++i) {
         const Stroke& s = strokes[i];
         // The common case first: a valid stamp with a cached footprint.
         if (s.kind == StrokeKind::Stamp && stamp_valid(s.stamp)) {
             const StampStroke& st = s.stamp;
-            if (const SpanMask* f = spans(st.set, st.tmpl, st.orient)) {
-                binner.add_stamp(*f, st.x, st.y, st.color);
+            if (const StampKind* k = binner.kind(st.set, st.tmpl, st.orient)) {
+                binner.add_stamp(*k, st.x, st.y, st.color);
                 continue;
             }
         }
@@ -314,24 +367,25 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
 bool RendererImpl::render_stamp_records(Canvas& canvas, const uint8_t* records, size_t n, unsigned threads,
                                         uint64_t work_limit) const {
     Bins& bins = scratch_bins();
-    Binner binner(bins, header_.width, header_.height, n);
-    uint64_t work = 0;
+    Binner binner(*this, bins, n);
+    const uint32_t S = uint32_t(header_.sets.size()), T = uint32_t(templates_.size());
+    const uint32_t O = uint32_t(header_.orientations.size());
+    uint64_t work = 0;  // at most 2^24 strokes of less than 2^36 each: no overflow
     for (size_t i = 0; i < n; ++i) {
-        const uint8_t* q = records + 16 * i;  // SPEC 6: kind 0, set, template, orientation, x, y, RGBA
-        StampStroke st;
-        st.set = q[1];
-        st.tmpl = q[2];
-        st.orient = q[3];
-        st.x = int32_t(detail::load_u32(q + 4));
-        st.y = int32_t(detail::load_u32(q + 8));
-        st.color = Rgba8{q[12], q[13], q[14], q[15]};
-        if (q[0] != 0 || !stamp_valid(st)) return false;
-        const SpanMask* f = spans(st.set, st.tmpl, st.orient);
-        if (!f) return false;
-        work += f->box_work;
-        if (work > work_limit) return false;
-        binner.add_stamp(*f, st.x, st.y, st.color);
+        // SPEC 6: kind 0, set, template, orientation, x, y (little-endian), R, G, B, A.
+        const uint8_t* q = records + 16 * i;
+        const uint32_t set = q[1], tmpl = q[2], orient = q[3];
+        const uint32_t x = detail::load_u32(q + 4), y = detail::load_u32(q + 8);
+        // The checks of stamp_valid() in one branch (|x|, |y| <= 2^24 by unsigned wrap-around).
+        constexpr uint32_t kMax = uint32_t(kMaxCoord);
+        if ((q[0] != 0) | (set >= S) | (tmpl >= T) | (orient >= O) | (x + kMax > 2 * kMax) | (y + kMax > 2 * kMax))
+            return false;
+        const StampKind* k = binner.kind(set, tmpl, orient);
+        if (!k) return false;
+        work += k->work;
+        binner.add_stamp(*k, int32_t(x), int32_t(y), Rgba8{q[12], q[13], q[14], q[15]});
     }
+    if (work > work_limit) return false;
     binner.finish();
     size_canvas(canvas, header_);
     draw_tiles(*this, canvas, bins, nullptr, threads);
