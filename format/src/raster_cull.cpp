@@ -100,16 +100,20 @@ uint64_t narrow_scalar(CullBits& bits, const MaskRef& m, uint32_t j0, uint32_t j
 // The tile loop of cull_tile, expanded per ISA so that the kernels inline.
 #define SPT_CULL_TILE_LOOP(MARK, VISIBLE, ROWS, NARROW)                                                         \
     bits.clear();                                                                                               \
-    if (plan.rows.size() < 2 * size_t(n)) plan.rows.resize(2 * size_t(n));                                      \
-    size_t slots = 0;                                                                                           \
+    if (plan.ops.size() < n) plan.ops.resize(n);                                                                \
+    size_t slots = 0, ops = 0;                                                                                  \
     const int64_t width = t.x1 - t.x0;                                                                          \
     uint64_t live[CullBits::kWordCols];                                                                         \
     for (uint32_t k = 0; k < CullBits::kWordCols; ++k) live[k] = range_word(0, width, 64 * int64_t(k) - kBias); \
     for (uint32_t i = n; i-- > 0;) {                                                                            \
         const TileItem& it = list[i];                                                                           \
-        if (it.mask == TileItem::kNoMask) continue;                                                             \
+        if (it.mask == TileItem::kNoMask || !masks[it.mask].extent) {                                           \
+            DrawOp& op = plan.ops[ops++];                                                                       \
+            op.kind = DrawOp::Whole;                                                                            \
+            op.item = i;                                                                                        \
+            continue;                                                                                           \
+        }                                                                                                       \
         const MaskRef& p = masks[it.mask];                                                                      \
-        if (!p.extent) continue;                                                                                \
         const int64_t j0 = std::max<int64_t>(0, t.y0 - it.oy);                                                  \
         const int64_t j1 = std::max(j0, std::min<int64_t>(p.h, t.y1 - it.oy));                                  \
         const int64_t dx = int64_t(it.ox) - t.x0, r0 = it.oy + j0 - t.y0;                                       \
@@ -117,8 +121,16 @@ uint64_t narrow_scalar(CullBits& bits, const MaskRef& m, uint32_t j0, uint32_t j
             const bool narrow = p.foot && dx >= -kBias && dx < 4 * 64 - kBias;                                  \
             const uint64_t vis = narrow ? NARROW(bits, p, uint32_t(j0), uint32_t(j1), dx, r0, live, it.c.a == 255) \
                                         : ROWS(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width);      \
-            plan.rows[2 * size_t(i)] = vis ? uint32_t(j0 + __builtin_ctzll(vis)) : 0;                           \
-            plan.rows[2 * size_t(i) + 1] = vis ? uint32_t(j0 + 64 - __builtin_clzll(vis)) : 0;                  \
+            if (vis) {                                                                                          \
+                const int64_t a = __builtin_ctzll(vis), b = 64 - __builtin_clzll(vis);                          \
+                DrawOp& op = plan.ops[ops++];                                                                   \
+                op.kind = DrawOp::Dense;                                                                        \
+                op.pairs = p.dense + size_t(j0 + a) * p.dense_steps * 2 * kDenseStep;                           \
+                op.dst = int32_t((r0 + a) * t.stride + 3 * dx);                                                 \
+                op.rows = uint16_t(b - a);                                                                      \
+                op.steps = uint8_t(p.dense_steps);                                                              \
+                op.c = it.c;                                                                                    \
+            }                                                                                                   \
             if (narrow) continue; /* marked already */                                                          \
         } else {                                                                                                \
             if (plan.cols.size() < (slots + 1) * 2 * CullBits::kRows)                                           \
@@ -127,9 +139,13 @@ uint64_t narrow_scalar(CullBits& bits, const MaskRef& m, uint32_t j0, uint32_t j
                 VISIBLE(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width,                              \
                         &plan.cols[slots * 2 * CullBits::kRows]);                                               \
             ++slots;                                                                                            \
+            DrawOp& op = plan.ops[ops++];                                                                       \
+            op.kind = DrawOp::SpanCols;                                                                         \
+            op.item = i;                                                                                        \
         }                                                                                                       \
         if (it.c.a == 255 && j1 > j0) MARK(bits, p.core, p.core_words, p.h, uint32_t(j0), uint32_t(j1), dx, r0); \
     }                                                                                                           \
+    plan.n = ops;                                                                                               \
     plan.slots = slots;
 
 void tile_scalar(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks, const CullTile& t,

@@ -42,6 +42,7 @@ void cull_visible(const CullBits& bits, const uint32_t* extent, uint32_t j0, uin
 // One render tile and how its strokes are drawn (render_tiles.cpp).
 struct CullTile {
     int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // canvas pixels [x0, x1) x [y0, y1)
+    int64_t stride = 0;                      // bytes a row of the tile buffer
     bool dense = false;                      // blend_dense draws on this ISA
     // A dense box is drawn whole when its rows lie in the tile buffer: from dense_lo columns
     // left of x0 up to 3 * x0 + dense_hi3 bytes.
@@ -54,21 +55,38 @@ inline bool cull_dense(const TileItem& it, const MaskRef& m, const CullTile& t) 
     return t.dense && m.dense && dx >= t.dense_lo && 3 * dx + int64_t(m.dense_steps * kDenseStep) <= t.dense_hi3;
 }
 
+// One step of a tile's forward (drawing) pass, as its backwards pass planned it.
+struct DrawOp {
+    enum Kind : uint8_t {
+        Dense,     // rows of a dense box: blend_dense's kernel on the fields below
+        SpanCols,  // entry `item`, span by span, each row clipped to its visible columns (cols)
+        Whole,     // entry `item` as it is (no culling: no mask, or a mask without a core)
+    };
+    const uint8_t* pairs = nullptr;  // Dense: SpanMask::dense from the first row to blend
+    int32_t dst = 0;                 // Dense: byte offset of that row's column 0 from the tile's pixel (x0, y0)
+    uint32_t item = 0;               // SpanCols, Whole: index in the tile's list
+    uint16_t rows = 0;               // Dense: rows to blend
+    uint8_t steps = 0;               // Dense: SpanMask::dense_steps
+    Kind kind = Whole;
+    Rgba8 c;                         // Dense: the colour
+};
+
 // What a tile's backwards pass found, for its forward (drawing) pass.
 struct CullPlan {
-    // Per entry: the rows [rows[2i], rows[2i+1]) of a dense entry that hold a visible pixel
-    // (mask rows, inside the tile's rows; empty when none does).
-    std::vector<uint32_t> rows;
-    // Per span-culled entry (an entry with an extent that is not dense), the last one first:
-    // 2 * CullBits::kRows bytes of visible columns (cull_visible) of its rows inside the tile.
+    // What to draw, the last step first (the forward pass reads ops[n - 1] .. ops[0]); entries
+    // of which nothing is visible have none.
+    std::vector<DrawOp> ops;
+    size_t n = 0;
+    // Per span-culled entry (SpanCols), the last one first: 2 * CullBits::kRows bytes of
+    // visible columns (cull_visible) of its rows inside the tile.
     std::vector<uint8_t> cols;
     size_t slots = 0;  // span-culled entries in cols
 };
 
 // The backwards pass over a tile's entries list[0..n) (masks: the frame's MaskRef table): bits
-// are cleared, then for each entry whose mask has a core (MaskRef::extent set), last to first:
-// its visible rows (dense) or columns (otherwise) into plan, then, when its alpha is 255, its
-// core into bits.
+// are cleared, then for each entry, last to first: its drawing step into plan (for an entry
+// whose mask has a core, MaskRef::extent set: only its visible rows (dense) or columns
+// (otherwise)), then, when its alpha is 255, its core into bits.
 void cull_tile(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks, const CullTile& t,
                CullPlan& plan);
 

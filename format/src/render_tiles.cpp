@@ -271,30 +271,26 @@ void draw_tiles(const RendererImpl& r, Canvas& canvas, const Bins& bins, const s
             const MaskRef* masks = bins.masks.data();
             CullTile ct;
             ct.x0 = t.x0; ct.y0 = t.y0; ct.x1 = t.x1; ct.y1 = t.y1;
+            ct.stride = int64_t(kTileStride);
             ct.dense = dense;
             ct.dense_lo = -kApronX;
             ct.dense_hi3 = 3 * (kTileW + kApronX);
 
             cull_tile(cull, list, count, masks, ct, plan);
             size_t slots = plan.slots;  // span-culled entries: their columns are in plan.cols, last first
-            for (uint32_t i = 0; i < count; ++i) {
-                const TileItem& it = list[i];
-                if (it.mask == TileItem::kNoMask) {
-                    r.draw_into(t, (*strokes)[uint32_t(it.ox)]);
+            for (size_t k = plan.n; k-- > 0;) {
+                const DrawOp& op = plan.ops[k];
+                if (op.kind == DrawOp::Dense) {  // the dense kernel, called directly
+                    dense_fn(origin + op.dst, kTileStride, op.pairs, op.rows, op.steps, op.c);
                     continue;
                 }
-                const MaskRef& m = masks[it.mask];
-                if (m.extent && cull_dense(it, m, ct)) {  // the dense kernel, called directly
-                    const uint32_t j0 = plan.rows[2 * size_t(i)], j1 = plan.rows[2 * size_t(i) + 1];
-                    if (j1 > j0)
-                        dense_fn(origin + (it.oy + int64_t(j0) - t.y0) * int64_t(kTileStride) + 3 * (it.ox - t.x0),
-                                 kTileStride, m.dense + size_t(j0) * m.dense_steps * 2 * kDenseStep, j1 - j0,
-                                 m.dense_steps, it.c);
-                } else if (m.extent) {
-                    blend_spans_cols(t, placed(it, m), &plan.cols[--slots * 2 * CullBits::kRows]);
-                } else {
-                    blend_spans(t, placed(it, m));
-                }
+                const TileItem& it = list[op.item];
+                if (op.kind == DrawOp::SpanCols)
+                    blend_spans_cols(t, placed(it, masks[it.mask]), &plan.cols[--slots * 2 * CullBits::kRows]);
+                else if (it.mask == TileItem::kNoMask)
+                    r.draw_into(t, (*strokes)[uint32_t(it.ox)]);
+                else
+                    blend_spans(t, placed(it, masks[it.mask]));
             }
             copy_rows(canvas.row(uint32_t(t.y0)) + 3 * t.x0, size_t(W) * 3, origin, kTileStride, t.y1 - t.y0, row_bytes);
         }
