@@ -230,10 +230,6 @@ bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p, uint32_t 
 void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols);
 // True when blend_dense draws on this ISA.
 bool dense_available();
-// blend_dense's kernel for the current ISA (nullptr: none), for a caller that draws many dense
-// boxes: fn(dst, stride, rows of pairs from SpanMask::dense, row count, dense_steps, colour).
-using DenseKernel = void (*)(uint8_t*, size_t, const uint8_t*, uint32_t, uint32_t, Rgba8);
-DenseKernel dense_kernel();
 // Composites one row of one-byte coverage: n pixels starting at canvas (x, y), clipped to t.
 void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c);
 

@@ -71,6 +71,14 @@ struct DrawOp {
     Rgba8 c;                         // Dense: the colour
 };
 
+// Draws the run of Dense ops that ends at ops[k - 1] (ops[k - 1], ops[k - 2], ... down to the
+// first op that is not Dense, or ops[0]) into the tile buffer at origin, rows stride bytes
+// apart, as blend_dense's kernel would; returns the index past the ops left (0, or the index
+// + 1 of the op that stopped the run). nullptr when no dense kernel serves the current ISA.
+struct DrawOp;
+using DenseOpsKernel = size_t (*)(uint8_t* origin, size_t stride, const DrawOp* ops, size_t k);
+DenseOpsKernel dense_ops_kernel();
+
 // What a tile's backwards pass found, for its forward (drawing) pass.
 struct CullPlan {
     // What to draw, the last step first (the forward pass reads ops[n - 1] .. ops[0]); entries

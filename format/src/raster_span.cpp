@@ -19,6 +19,7 @@
 #include <cstring>
 
 #include "raster.hpp"
+#include "raster_cull.hpp"
 
 #if defined(__x86_64__) || defined(_M_X64)
 #include <immintrin.h>
@@ -368,6 +369,30 @@ __attribute__((target("avx512f,avx512bw"))) void spans_cols_avx512(const BlendTa
                                                                    const uint8_t* cols) {
     SPT_SPANS_COLS_LOOP(span_avx512_inl, make_pattern512, Pat512)
 }
+// The run of Dense ops that ends at ops[k - 1], drawn last to first (dense_ops_kernel()): one
+// loop over the strokes, with the constants and the call of dense_avx512 out of it.
+__attribute__((target("avx512f,avx512bw"))) size_t dense_ops_avx512(uint8_t* origin, size_t stride, const DrawOp* ops,
+                                                                    size_t k) {
+    while (k > 0 && ops[k - 1].kind == DrawOp::Dense) {
+        const DrawOp& op = ops[--k];
+        uint32_t word;
+        std::memcpy(&word, &op.c, 4);
+        const __m512i v = _mm512_set1_epi32(int32_t(word));
+        __m512i pat[2];  // phases 0 and 1: a row's first and second step
+        pat[0] = _mm512_shuffle_epi8(v, _mm512_loadu_si512(kPhase));
+        uint8_t* dst = origin + op.dst;
+        if (op.steps == 1) {
+            if (op.c.a == 255) dense_avx512_t<true, 1>(dst, stride, op.pairs, op.rows, pat, 255);
+            else dense_avx512_t<false, 1>(dst, stride, op.pairs, op.rows, pat, op.c.a);
+        } else {
+            pat[1] = _mm512_shuffle_epi8(v, _mm512_loadu_si512(kPhase + 1));
+            if (op.c.a == 255) dense_avx512_t<true, 2>(dst, stride, op.pairs, op.rows, pat, 255);
+            else dense_avx512_t<false, 2>(dst, stride, op.pairs, op.rows, pat, op.c.a);
+        }
+    }
+    return k;
+}
+
 __attribute__((target("avx512f,avx512bw"))) void dense_avx512(uint8_t* dst, size_t stride, const uint8_t* cov, uint32_t h,
                                                               uint32_t steps, Rgba8 c) {
     Pat512 pat;
@@ -499,7 +524,12 @@ void span_mask_make_core(SpanMask& m) {
 }
 
 bool dense_available() { return kernels().dense != nullptr; }
-DenseKernel dense_kernel() { return kernels().dense; }
+DenseOpsKernel dense_ops_kernel() {
+#ifdef SPT_SPAN_X86
+    if (kernels().dense == dense_avx512) return dense_ops_avx512;
+#endif
+    return nullptr;
+}
 
 void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
     if (p.c.a == 0) return;

@@ -244,8 +244,8 @@ void draw_tiles(const RendererImpl& r, Canvas& canvas, const Bins& bins, const s
         bg_row[3 * i + 2] = bg.b;
     }
 
-    const DenseKernel dense_fn = dense_kernel();
-    const bool dense = dense_fn != nullptr;
+    const DenseOpsKernel dense_ops = dense_ops_kernel();  // Dense ops are planned only when there is one
+    const bool dense = dense_ops != nullptr;
     std::atomic<size_t> next{0};
     auto worker = [&]() {
         thread_local std::vector<uint8_t> buf;  // zeroed once; the apron then holds leftovers
@@ -280,8 +280,8 @@ void draw_tiles(const RendererImpl& r, Canvas& canvas, const Bins& bins, const s
             size_t slots = plan.slots;  // span-culled entries: their columns are in plan.cols, last first
             for (size_t k = plan.n; k-- > 0;) {
                 const DrawOp& op = plan.ops[k];
-                if (op.kind == DrawOp::Dense) {  // the dense kernel, called directly
-                    dense_fn(origin + op.dst, kTileStride, op.pairs, op.rows, op.steps, op.c);
+                if (op.kind == DrawOp::Dense) {  // the run of dense ops from here, in one call
+                    k = dense_ops(origin, kTileStride, plan.ops.data(), k + 1);  // the loop's k-- goes on
                     continue;
                 }
                 const TileItem& it = list[op.item];
