@@ -223,11 +223,11 @@ void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy
 // nothing drawn, when no dense kernel serves the current ISA (the caller then uses
 // blend_spans).
 bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p, uint32_t j0, uint32_t j1);
-// Composites p clipped to t like blend_spans, each row further clipped to the columns
-// [cols[2 * i], cols[2 * i + 1]) relative to t.x0, where i counts p's rows from the first one
-// inside t; rows with an empty range are skipped. Callers pass ranges inside the row's span
-// (occlusion culling: only the columns that later strokes leave visible).
-void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols);
+// Composites the rows of p that `rows` names (bit i: the i-th of p's rows inside t, at most
+// 64 of them) like blend_spans, each clipped to the columns [cols[2 * i], cols[2 * i + 1])
+// relative to t.x0, a non-empty range inside the row's span and t (occlusion culling: only
+// the rows and columns that later strokes leave visible).
+void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols, uint64_t rows);
 // True when blend_dense draws on this ISA.
 bool dense_available();
 // Composites one row of one-byte coverage: n pixels starting at canvas (x, y), clipped to t.

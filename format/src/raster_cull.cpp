@@ -97,8 +97,20 @@ uint64_t narrow_scalar(CullBits& bits, const MaskRef& m, uint32_t j0, uint32_t j
     return out;
 }
 
+// A span-drawn entry (cull_tile): the visible columns of rows [j0, j1) into cols, the rows with
+// any as bits from j0 (returned), then, when `opaque`, its core into bits.
+uint64_t span_scalar(CullBits& bits, const MaskRef& m, uint32_t j0, uint32_t j1, int64_t dx, int64_t r0,
+                     int64_t width, uint8_t* cols, bool opaque) {
+    visible_scalar(bits, m.extent, j0, j1, dx, r0, width, cols);
+    uint64_t out = 0;
+    for (uint32_t i = 0; i < j1 - j0; ++i)
+        if (cols[2 * i] < cols[2 * i + 1]) out |= uint64_t(1) << i;
+    if (opaque) mark_scalar(bits, m.core, m.core_words, m.h, j0, j1, dx, r0);
+    return out;
+}
+
 // The tile loop of cull_tile, expanded per ISA so that the kernels inline.
-#define SPT_CULL_TILE_LOOP(MARK, VISIBLE, ROWS, NARROW)                                                         \
+#define SPT_CULL_TILE_LOOP(MARK, SPAN, ROWS, NARROW)                                                            \
     bits.clear();                                                                                               \
     if (plan.ops.size() < n) plan.ops.resize(n);                                                                \
     size_t slots = 0, ops = 0;                                                                                  \
@@ -131,26 +143,30 @@ uint64_t narrow_scalar(CullBits& bits, const MaskRef& m, uint32_t j0, uint32_t j
                 op.steps = uint8_t(p.dense_steps);                                                              \
                 op.c = it.c;                                                                                    \
             }                                                                                                   \
-            if (narrow) continue; /* marked already */                                                          \
-        } else {                                                                                                \
-            if (plan.cols.size() < (slots + 1) * 2 * CullBits::kRows)                                           \
-                plan.cols.resize((slots + 1) * 2 * CullBits::kRows);                                            \
-            if (j1 > j0)                                                                                        \
-                VISIBLE(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width,                              \
-                        &plan.cols[slots * 2 * CullBits::kRows]);                                               \
+            if (!narrow && it.c.a == 255 && j1 > j0)                                                            \
+                MARK(bits, p.core, p.core_words, p.h, uint32_t(j0), uint32_t(j1), dx, r0);                      \
+            continue;                                                                                           \
+        }                                                                                                       \
+        /* Drawn span by span: the visible columns of its rows into a slot of plan.cols (kept only */           \
+        /* when a row has any), its core into bits. */                                                          \
+        if (plan.cols.size() < (slots + 1) * 2 * CullBits::kRows) plan.cols.resize((slots + 1) * 2 * CullBits::kRows); \
+        const uint64_t vis = j1 > j0 ? SPAN(bits, p, uint32_t(j0), uint32_t(j1), dx, r0, width,                 \
+                                            &plan.cols[slots * 2 * CullBits::kRows], it.c.a == 255)             \
+                                     : 0;                                                                       \
+        if (vis) {                                                                                              \
             ++slots;                                                                                            \
             DrawOp& op = plan.ops[ops++];                                                                       \
             op.kind = DrawOp::SpanCols;                                                                         \
             op.item = i;                                                                                        \
+            op.vis = vis;                                                                                       \
         }                                                                                                       \
-        if (it.c.a == 255 && j1 > j0) MARK(bits, p.core, p.core_words, p.h, uint32_t(j0), uint32_t(j1), dx, r0); \
     }                                                                                                           \
     plan.n = ops;                                                                                               \
     plan.slots = slots;
 
 void tile_scalar(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks, const CullTile& t,
                  CullPlan& plan) {
-    SPT_CULL_TILE_LOOP(mark_scalar, visible_scalar, rows_scalar, narrow_scalar)
+    SPT_CULL_TILE_LOOP(mark_scalar, span_scalar, rows_scalar, narrow_scalar)
 }
 
 #ifdef SPT_CULL_X86
@@ -308,9 +324,55 @@ SPT_CULL_TARGET inline uint64_t narrow_avx512(CullBits& bits, const MaskRef& mr,
     return out;
 }
 
+// src << s for s >= 0, src >> -s for s < 0; 0 when |s| >= 64 (per-lane shifts give 0 there).
+SPT_CULL_TARGET inline __m512i shift_by(__m512i src, int64_t s) {
+    return _mm512_srlv_epi64(_mm512_sllv_epi64(src, _mm512_set1_epi64(s > 0 ? s : 0)), _mm512_set1_epi64(s < 0 ? -s : 0));
+}
+
+// span_scalar, eight rows a step. A step whose rows are all hidden (most steps of the big
+// strokes a painting starts with) stores no columns and marks nothing: the core lies inside
+// the span, so its bits are set already. Only the two word columns of tile columns are marked.
+SPT_CULL_TARGET inline uint64_t span_avx512(CullBits& bits, const MaskRef& mr, uint32_t j0, uint32_t j1, int64_t dx,
+                                            int64_t r0, int64_t width, uint8_t* cols, bool opaque) {
+    static_assert(kBias == 64 && CullBits::kTileCols == 128, "tile columns are word columns 1 and 2");
+    const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64);
+    const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width);
+    uint64_t out = 0;
+    const uint32_t n = j1 - j0;
+    for (uint32_t j = 0; j < n; j += 8) {
+        const __mmask8 m = rows_mask(n - j);
+        const RowMasks rm = row_masks(mr.extent + j0 + j, m, vdx, vw);
+        uint64_t* w1 = &bits.w[1][r0 + j];
+        uint64_t* w2 = &bits.w[2][r0 + j];
+        const __m512i b1 = _mm512_maskz_loadu_epi64(m, w1), b2 = _mm512_maskz_loadu_epi64(m, w2);
+        const __m512i v1 = _mm512_andnot_si512(b1, rm.m1), v2 = _mm512_andnot_si512(b2, rm.m2);
+        const __mmask8 k1 = _mm512_test_epi64_mask(v1, v1), k2 = _mm512_test_epi64_mask(v2, v2);
+        if (!(k1 | k2)) continue;
+        out |= uint64_t(k1 | k2) << j;
+        // Lowest set bit: 63 - lzcnt(v & -v); highest: 63 - lzcnt(v) (as visible_avx512).
+        const __m512i lz1 = _mm512_lzcnt_epi64(_mm512_and_si512(v1, _mm512_sub_epi64(zero, v1)));
+        const __m512i lz2 = _mm512_lzcnt_epi64(_mm512_and_si512(v2, _mm512_sub_epi64(zero, v2)));
+        __m512i lo = _mm512_mask_mov_epi64(zero, k2, _mm512_sub_epi64(_mm512_set1_epi64(127), lz2));
+        lo = _mm512_mask_mov_epi64(lo, k1, _mm512_sub_epi64(_mm512_set1_epi64(63), lz1));
+        __m512i hi = _mm512_mask_mov_epi64(zero, k1, _mm512_sub_epi64(k64, _mm512_lzcnt_epi64(v1)));
+        hi = _mm512_mask_mov_epi64(hi, k2, _mm512_sub_epi64(_mm512_set1_epi64(128), _mm512_lzcnt_epi64(v2)));
+        _mm512_mask_cvtepi64_storeu_epi16(cols + 2 * j, m, _mm512_or_si512(lo, _mm512_slli_epi64(hi, 8)));
+        if (!opaque) continue;
+        __m512i c1 = b1, c2 = b2;
+        for (uint32_t k = 0; k < mr.core_words; ++k) {  // word k's bit 0 is tile column dx + 64k
+            const __m512i c = _mm512_maskz_loadu_epi64(m, mr.core + size_t(k) * mr.h + j0 + j);
+            c1 = _mm512_or_si512(c1, shift_by(c, dx + 64 * int64_t(k)));
+            c2 = _mm512_or_si512(c2, shift_by(c, dx + 64 * int64_t(k) - 64));
+        }
+        _mm512_mask_storeu_epi64(w1, m, c1);
+        _mm512_mask_storeu_epi64(w2, m, c2);
+    }
+    return out;
+}
+
 SPT_CULL_TARGET void tile_avx512(CullBits& bits, const TileItem* list, uint32_t n, const MaskRef* masks,
                                  const CullTile& t, CullPlan& plan) {
-    SPT_CULL_TILE_LOOP(mark_tile_avx512, visible_avx512, rows_avx512, narrow_avx512)
+    SPT_CULL_TILE_LOOP(mark_tile_avx512, span_avx512, rows_avx512, narrow_avx512)
 }
 #undef SPT_CULL_TARGET
 #pragma GCC diagnostic pop

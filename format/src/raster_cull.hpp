@@ -3,10 +3,11 @@
 // A pixel where a later stroke has coverage 255 and alpha 255 ends up that stroke's colour
 // whatever was drawn there before (SPEC 8.6), so an exact renderer may skip earlier strokes
 // there. A tile walks its strokes backwards keeping one bit a pixel, "hidden by what comes
-// later": each stroke first asks which of its columns (cull_visible), or for a narrow stroke
-// which of its rows, are still visible, then adds its opaque core (cull_mark); cull_tile does
-// the whole walk. Both work on whole columns of rows at once, eight rows a
-// vector with AVX-512: per stroke row they cost a fraction of blending it.
+// later": each stroke first asks which of its rows and columns (cull_visible), or for a narrow
+// stroke which of its rows, are still visible, then adds its opaque core (cull_mark); cull_tile
+// does the whole walk, and plans what the tile then draws (DrawOp). Both work on whole columns
+// of rows at once, eight rows a vector with AVX-512: per stroke row they cost a fraction of
+// blending it.
 #pragma once
 
 #include <cstdint>
@@ -59,11 +60,12 @@ inline bool cull_dense(const TileItem& it, const MaskRef& m, const CullTile& t) 
 struct DrawOp {
     enum Kind : uint8_t {
         Dense,     // rows of a dense box: blend_dense's kernel on the fields below
-        SpanCols,  // entry `item`, span by span, each row clipped to its visible columns (cols)
+        SpanCols,  // entry `item`, span by span: the rows of vis, clipped to their visible columns (cols)
         Whole,     // entry `item` as it is (no culling: no mask, or a mask without a core)
     };
     const uint8_t* pairs = nullptr;  // Dense: SpanMask::dense from the first row to blend
     int32_t dst = 0;                 // Dense: byte offset of that row's column 0 from the tile's pixel (x0, y0)
+    uint64_t vis = 0;                // SpanCols: its rows with visible columns (bit i: the i-th inside the tile)
     uint32_t item = 0;               // SpanCols, Whole: index in the tile's list
     uint16_t rows = 0;               // Dense: rows to blend
     uint8_t steps = 0;               // Dense: SpanMask::dense_steps
@@ -86,7 +88,8 @@ struct CullPlan {
     std::vector<DrawOp> ops;
     size_t n = 0;
     // Per span-culled entry (SpanCols), the last one first: 2 * CullBits::kRows bytes of
-    // visible columns (cull_visible) of its rows inside the tile.
+    // visible columns (cull_visible) of its rows inside the tile (of the rows its op's vis
+    // names; the others' are unspecified).
     std::vector<uint8_t> cols;
     size_t slots = 0;  // span-culled entries in cols
 };

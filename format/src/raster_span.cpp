@@ -314,26 +314,28 @@ __attribute__((target("avx512f,avx512bw"))) inline void make_pattern512(Pat512& 
         SPAN(row + 3 * (xs - t.x0), p.cov3 + r.off + 3 * (xs - s), pat, uint32_t(3 * (xe - xs)), p.c.a, t.slack); \
     }
 
-// The same, each row clipped further to its visible columns (blend_spans_cols).
+// The same for the rows of `rows` only (bit i: the i-th row inside t), each clipped further to
+// its visible columns (blend_spans_cols): a loop over the set bits, not over every row.
 #define SPT_SPANS_COLS_LOOP(SPAN, PATTERN, PAT_T)                                                       \
     PAT_T pat;                                                                                        \
     PATTERN(pat, p.c);                                                                                \
-    const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy), j1 = std::min<int64_t>(p.h, t.y1 - p.oy);   \
-    uint8_t* row = t.px + (p.oy + j0 - t.y0) * int64_t(t.stride);                                     \
-    for (int64_t j = j0; j < j1; ++j, row += t.stride, cols += 2) {                                   \
-        if (cols[0] >= cols[1]) continue;                                                             \
-        const int64_t s = p.ox + p.rows[j].lo, xs = t.x0 + cols[0];                                   \
-        SPAN(row + 3 * int64_t(cols[0]), p.cov3 + p.rows[j].off + 3 * (xs - s), pat,                   \
-             uint32_t(3 * (cols[1] - cols[0])), p.c.a, t.slack);                                      \
+    const int64_t j0 = std::max<int64_t>(0, t.y0 - p.oy);                                             \
+    uint8_t* const first = t.px + (p.oy + j0 - t.y0) * int64_t(t.stride);                             \
+    for (uint64_t left = rows; left; left &= left - 1) {                                              \
+        const int64_t i = __builtin_ctzll(left), j = j0 + i;                                          \
+        const uint8_t* c = cols + 2 * i;                                                              \
+        const int64_t s = p.ox + p.rows[j].lo, xs = t.x0 + c[0];                                      \
+        SPAN(first + i * int64_t(t.stride) + 3 * int64_t(c[0]), p.cov3 + p.rows[j].off + 3 * (xs - s), \
+             pat, uint32_t(3 * (c[1] - c[0])), p.c.a, t.slack);                                       \
     }
 
 void spans_scalar(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_scalar, make_pattern, Pat96) }
-void spans_cols_scalar(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
+void spans_cols_scalar(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols, uint64_t rows) {
     SPT_SPANS_COLS_LOOP(span_scalar, make_pattern, Pat96)
 }
 #ifdef SPT_SPAN_X86
 void spans_sse2(const BlendTarget& t, const PlacedSpans& p) { SPT_SPANS_LOOP(span_sse2, make_pattern, Pat96) }
-void spans_cols_sse2(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
+void spans_cols_sse2(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols, uint64_t rows) {
     SPT_SPANS_COLS_LOOP(span_sse2, make_pattern, Pat96)
 }
 __attribute__((target("avx2"))) inline void span_avx2_inl(uint8_t* dst, const uint8_t* cov, const uint8_t* pat,
@@ -348,7 +350,7 @@ __attribute__((target("avx2"))) void span_avx2(uint8_t* dst, const uint8_t* cov,
 __attribute__((target("avx2"))) void spans_avx2(const BlendTarget& t, const PlacedSpans& p) {
     SPT_SPANS_LOOP(span_avx2_inl, make_pattern_avx2, Pat96)
 }
-__attribute__((target("avx2"))) void spans_cols_avx2(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
+__attribute__((target("avx2"))) void spans_cols_avx2(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols, uint64_t rows) {
     SPT_SPANS_COLS_LOOP(span_avx2_inl, make_pattern_avx2, Pat96)
 }
 __attribute__((target("avx512f,avx512bw"))) inline void span_avx512_inl(uint8_t* dst, const uint8_t* cov, const Pat512& pat,
@@ -366,7 +368,7 @@ __attribute__((target("avx512f,avx512bw"))) void spans_avx512(const BlendTarget&
     SPT_SPANS_LOOP(span_avx512_inl, make_pattern512, Pat512)
 }
 __attribute__((target("avx512f,avx512bw"))) void spans_cols_avx512(const BlendTarget& t, const PlacedSpans& p,
-                                                                   const uint8_t* cols) {
+                                                                   const uint8_t* cols, uint64_t rows) {
     SPT_SPANS_COLS_LOOP(span_avx512_inl, make_pattern512, Pat512)
 }
 // The run of Dense ops that ends at ops[k - 1], drawn last to first (dense_ops_kernel()): one
@@ -412,7 +414,7 @@ __attribute__((target("avx512f,avx512bw"))) void dense_avx512(uint8_t* dst, size
 using SpansFn = void (*)(const BlendTarget&, const PlacedSpans&);
 using DenseFn = void (*)(uint8_t*, size_t, const uint8_t*, uint32_t, uint32_t, Rgba8);
 
-using SpansColsFn = void (*)(const BlendTarget&, const PlacedSpans&, const uint8_t*);
+using SpansColsFn = void (*)(const BlendTarget&, const PlacedSpans&, const uint8_t*, uint64_t);
 
 struct Kernels {
     SpansFn spans;
@@ -531,9 +533,9 @@ DenseOpsKernel dense_ops_kernel() {
     return nullptr;
 }
 
-void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols) {
+void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t* cols, uint64_t rows) {
     if (p.c.a == 0) return;
-    kernels().spans_cols(t, p, cols);
+    kernels().spans_cols(t, p, cols, rows);
 }
 
 bool blend_dense(uint8_t* origin, size_t stride, const PlacedSpans& p, uint32_t j0, uint32_t j1) {

@@ -286,7 +286,7 @@ void draw_tiles(const RendererImpl& r, Canvas& canvas, const Bins& bins, const s
                 }
                 const TileItem& it = list[op.item];
                 if (op.kind == DrawOp::SpanCols)
-                    blend_spans_cols(t, placed(it, masks[it.mask]), &plan.cols[--slots * 2 * CullBits::kRows]);
+                    blend_spans_cols(t, placed(it, masks[it.mask]), &plan.cols[--slots * 2 * CullBits::kRows], op.vis);
                 else if (it.mask == TileItem::kNoMask)
                     r.draw_into(t, (*strokes)[uint32_t(it.ox)]);
                 else
