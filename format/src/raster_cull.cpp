@@ -134,12 +134,12 @@ uint64_t span_scalar(CullBits& bits, const MaskRef& m, uint32_t j0, uint32_t j1,
             const uint64_t vis = narrow ? NARROW(bits, p, uint32_t(j0), uint32_t(j1), dx, r0, live, it.c.a == 255) \
                                         : ROWS(bits, p.extent, uint32_t(j0), uint32_t(j1), dx, r0, width);      \
             if (vis) {                                                                                          \
-                const int64_t a = __builtin_ctzll(vis), b = 64 - __builtin_clzll(vis);                          \
+                const int64_t a = __builtin_ctzll(vis);                                                         \
                 DrawOp& op = plan.ops[ops++];                                                                   \
                 op.kind = DrawOp::Dense;                                                                        \
                 op.pairs = p.dense + size_t(j0 + a) * p.dense_steps * 2 * kDenseStep;                           \
                 op.dst = int32_t((r0 + a) * t.stride + 3 * dx);                                                 \
-                op.rows = uint16_t(b - a);                                                                      \
+                op.vis = vis >> a;                                                                              \
                 op.steps = uint8_t(p.dense_steps);                                                              \
                 op.c = it.c;                                                                                    \
             }                                                                                                   \

@@ -59,15 +59,16 @@ inline bool cull_dense(const TileItem& it, const MaskRef& m, const CullTile& t) 
 // One step of a tile's forward (drawing) pass, as its backwards pass planned it.
 struct DrawOp {
     enum Kind : uint8_t {
-        Dense,     // rows of a dense box: blend_dense's kernel on the fields below
+        Dense,     // rows of a dense box (those holding a visible pixel), with blend_dense's arithmetic
         SpanCols,  // entry `item`, span by span: the rows of vis, clipped to their visible columns (cols)
         Whole,     // entry `item` as it is (no culling: no mask, or a mask without a core)
     };
     const uint8_t* pairs = nullptr;  // Dense: SpanMask::dense from the first row to blend
     int32_t dst = 0;                 // Dense: byte offset of that row's column 0 from the tile's pixel (x0, y0)
-    uint64_t vis = 0;                // SpanCols: its rows with visible columns (bit i: the i-th inside the tile)
+    // The rows to draw: Dense, bit i: the i-th row from the first one (which bit 0 always names);
+    // SpanCols: the rows with visible columns, bit i: the i-th of the entry's rows inside the tile.
+    uint64_t vis = 0;
     uint32_t item = 0;               // SpanCols, Whole: index in the tile's list
-    uint16_t rows = 0;               // Dense: rows to blend
     uint8_t steps = 0;               // Dense: SpanMask::dense_steps
     Kind kind = Whole;
     Rgba8 c;                         // Dense: the colour
@@ -75,8 +76,9 @@ struct DrawOp {
 
 // Draws the run of Dense ops that ends at ops[k - 1] (ops[k - 1], ops[k - 2], ... down to the
 // first op that is not Dense, or ops[0]) into the tile buffer at origin, rows stride bytes
-// apart, as blend_dense's kernel would; returns the index past the ops left (0, or the index
-// + 1 of the op that stopped the run). nullptr when no dense kernel serves the current ISA.
+// apart: each op's rows of vis, with blend_dense's arithmetic. Returns the index past the ops
+// left (0, or the index + 1 of the op that stopped the run). nullptr when no dense kernel
+// serves the current ISA.
 struct DrawOp;
 using DenseOpsKernel = size_t (*)(uint8_t* origin, size_t stride, const DrawOp* ops, size_t k);
 DenseOpsKernel dense_ops_kernel();

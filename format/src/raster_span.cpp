@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstring>
 
+
 #include "raster.hpp"
 #include "raster_cull.hpp"
 
@@ -244,6 +245,48 @@ __attribute__((target("avx512f,avx512bw"))) inline void dense_avx512_t(uint8_t* 
     }
 }
 
+// The same for the rows named by `rows` (bit j: row j from dst), the others left alone.
+template <bool Opaque, int Steps>
+__attribute__((target("avx512f,avx512bw"))) inline void dense_rows_avx512_t(uint8_t* dst, size_t stride, const uint8_t* pairs,
+                                                                            uint64_t rows, const __m512i* pat, uint32_t a8) {
+    if (Opaque) {
+        const __m512i k80 = _mm512_set1_epi8(int8_t(0x80));
+        __m512i ps[Steps];
+        for (int s = 0; s < Steps; ++s) ps[s] = _mm512_xor_si512(pat[(64 * s) % 3], k80);
+        for (uint64_t left = rows; left; left &= left - 1) {
+            const size_t j = size_t(__builtin_ctzll(left));
+            uint8_t* const row = dst + j * stride;
+            const uint8_t* const pr = pairs + j * 128 * Steps;
+            for (int s = 0; s < Steps; ++s) {
+                const __m512i d = _mm512_xor_si512(_mm512_loadu_si512(row + 64 * s), k80);
+                _mm512_storeu_si512(row + 64 * s, opaque_pairs64(_mm512_loadu_si512(pr + 128 * s),
+                                                                 _mm512_loadu_si512(pr + 128 * s + 64), ps[s], d));
+            }
+        }
+    } else {
+        // Coverage is the low byte of every (c, 255 - c) pair.
+        const __m512i a = _mm512_set1_epi16(int16_t(a8)), z = _mm512_setzero_si512(), low = _mm512_set1_epi16(0xFF);
+        __m512i plo[Steps], phi[Steps];
+        for (int s = 0; s < Steps; ++s) {
+            const __m512i p = pat[(64 * s) % 3];
+            plo[s] = _mm512_unpacklo_epi8(p, z);
+            phi[s] = _mm512_unpackhi_epi8(p, z);
+        }
+        for (uint64_t left = rows; left; left &= left - 1) {
+            const size_t j = size_t(__builtin_ctzll(left));
+            uint8_t* const row = dst + j * stride;
+            const uint8_t* const pr = pairs + j * 128 * Steps;
+            for (int s = 0; s < Steps; ++s) {
+                const __m512i d = _mm512_loadu_si512(row + 64 * s);
+                const __m512i clo = _mm512_and_si512(_mm512_loadu_si512(pr + 128 * s), low);
+                const __m512i chi = _mm512_and_si512(_mm512_loadu_si512(pr + 128 * s + 64), low);
+                _mm512_storeu_si512(row + 64 * s, _mm512_packus_epi16(lanes32<false>(_mm512_unpacklo_epi8(d, z), clo, plo[s], a),
+                                                                      lanes32<false>(_mm512_unpackhi_epi8(d, z), chi, phi[s], a)));
+            }
+        }
+    }
+}
+
 #endif  // SPT_SPAN_X86
 
 using SpanFn = void (*)(uint8_t*, const uint8_t*, const uint8_t*, uint32_t, uint32_t, bool);
@@ -384,12 +427,12 @@ __attribute__((target("avx512f,avx512bw"))) size_t dense_ops_avx512(uint8_t* ori
         pat[0] = _mm512_shuffle_epi8(v, _mm512_loadu_si512(kPhase));
         uint8_t* dst = origin + op.dst;
         if (op.steps == 1) {
-            if (op.c.a == 255) dense_avx512_t<true, 1>(dst, stride, op.pairs, op.rows, pat, 255);
-            else dense_avx512_t<false, 1>(dst, stride, op.pairs, op.rows, pat, op.c.a);
+            if (op.c.a == 255) dense_rows_avx512_t<true, 1>(dst, stride, op.pairs, op.vis, pat, 255);
+            else dense_rows_avx512_t<false, 1>(dst, stride, op.pairs, op.vis, pat, op.c.a);
         } else {
             pat[1] = _mm512_shuffle_epi8(v, _mm512_loadu_si512(kPhase + 1));
-            if (op.c.a == 255) dense_avx512_t<true, 2>(dst, stride, op.pairs, op.rows, pat, 255);
-            else dense_avx512_t<false, 2>(dst, stride, op.pairs, op.rows, pat, op.c.a);
+            if (op.c.a == 255) dense_rows_avx512_t<true, 2>(dst, stride, op.pairs, op.vis, pat, 255);
+            else dense_rows_avx512_t<false, 2>(dst, stride, op.pairs, op.vis, pat, op.c.a);
         }
     }
     return k;
