@@ -154,28 +154,32 @@ __attribute__((target("avx2"))) inline void span_avx2_t(uint8_t* dst, const uint
 // AVX-512BW: 64 bytes a step, the span's end by a byte mask (masked loads and stores touch
 // nothing outside the span, so short spans need no slack and no size classes: a span of up to
 // 21 pixels is one step).
+// floor(u / 255) = ((u + 1) * 257) >> 16 for 0 <= u <= 65534 (a multiply-high and no shift;
+// render_math_test checks the kernels against blend8 on every input): each division by 255 below
+// adds 128 where SPEC 8.6 adds 127 and takes the high half of a product with 257.
 template <bool Opaque>
 __attribute__((target("avx512f,avx512bw"))) inline __m512i lanes32(__m512i d, __m512i c, __m512i p, __m512i a) {
-    const __m512i k127 = _mm512_set1_epi16(127), k255 = _mm512_set1_epi16(255), m = _mm512_set1_epi16(int16_t(0x8081));
+    const __m512i k128 = _mm512_set1_epi16(128), k255 = _mm512_set1_epi16(255), m = _mm512_set1_epi16(257);
     __m512i al = c;
-    if (!Opaque) al = _mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(_mm512_mullo_epi16(c, a), k127), m), 7);
+    if (!Opaque) al = _mm512_mulhi_epu16(_mm512_add_epi16(_mm512_mullo_epi16(c, a), k128), m);
     const __m512i v = _mm512_add_epi16(
-        _mm512_add_epi16(_mm512_mullo_epi16(d, _mm512_sub_epi16(k255, al)), _mm512_mullo_epi16(p, al)), k127);
-    return _mm512_srli_epi16(_mm512_mulhi_epu16(v, m), 7);
+        _mm512_add_epi16(_mm512_mullo_epi16(d, _mm512_sub_epi16(k255, al)), _mm512_mullo_epi16(p, al)), k128);
+    return _mm512_mulhi_epu16(v, m);
 }
 
 // The vpmaddubsw form of an opaque blend (A = 255, so alpha = coverage c), 64 bytes: with the
 // (c, 255 - c) pairs in the unpacklo/unpackhi order and the pixels (sd) and colour (sp) moved
 // to signed bytes (x - 128), c * (p - 128) + (255 - c) * (d - 128) = c * p + (255 - c) * d -
 // 128 * 255, which lies in [-32640, 32385] (no saturation); adding 32640 + 127 gives the rounded
-// numerator of SPEC 8.6 in [127, 65152], divided by 255 as everywhere else.
+// numerator of SPEC 8.6 in [127, 65152], divided by 255 as in lanes32 (bias 32640 + 128, then
+// the high half of a product with 257).
 __attribute__((target("avx512f,avx512bw"))) inline __m512i opaque_pairs64(__m512i pairs_lo, __m512i pairs_hi, __m512i sp,
                                                                           __m512i sd) {
-    const __m512i bias = _mm512_set1_epi16(32640 + 127), m = _mm512_set1_epi16(int16_t(0x8081));
+    const __m512i bias = _mm512_set1_epi16(int16_t(32640 + 128)), m = _mm512_set1_epi16(257);
     const __m512i lo = _mm512_maddubs_epi16(pairs_lo, _mm512_unpacklo_epi8(sp, sd));
     const __m512i hi = _mm512_maddubs_epi16(pairs_hi, _mm512_unpackhi_epi8(sp, sd));
-    return _mm512_packus_epi16(_mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(lo, bias), m), 7),
-                               _mm512_srli_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(hi, bias), m), 7));
+    return _mm512_packus_epi16(_mm512_mulhi_epu16(_mm512_add_epi16(lo, bias), m),
+                               _mm512_mulhi_epu16(_mm512_add_epi16(hi, bias), m));
 }
 
 // Opaque colours: opaque_pairs64, with the (c, 255 - c) pairs formed from the span's coverage.
