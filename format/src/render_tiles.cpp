@@ -112,6 +112,8 @@ public:
             b_.range.resize(4 * strokes);
         }
         if (b_.kind_slot.size() < r.triples()) b_.kind_slot.resize(r.triples(), 0);
+        templates_ = r.template_count();
+        orientations_ = r.header().orientations.size();
     }
     // Clears the triple slots, ready for the next frame.
     ~Binner() {
@@ -123,7 +125,7 @@ public:
     // What binning needs of a valid stamp triple's footprint; nullptr when it is not cached
     // (the stamp is then drawn from its inverse map).
     const StampKind* kind(uint32_t set, uint32_t tmpl, uint32_t orient) {
-        const size_t t = r_.slot_index(uint8_t(set), uint8_t(tmpl), uint8_t(orient));
+        const size_t t = (size_t(set) * templates_ + tmpl) * orientations_ + orient;  // RendererImpl::slot_index
         if (const uint32_t k = b_.kind_slot[t]) return &b_.kinds[k - 1];
         return add_kind(t, set, tmpl, orient);
     }
@@ -227,6 +229,7 @@ private:
     Bins& b_;
     int64_t W_, H_, tiles_x_;
     size_t tiles_ = 0, n_ = 0;
+    size_t templates_ = 0, orientations_ = 0;  // the triple index's strides, read once
 };
 
 // The tile pass: renders every tile of bins onto the canvas (already sized). Items without a
