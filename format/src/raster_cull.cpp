@@ -301,7 +301,8 @@ SPT_CULL_TARGET inline uint64_t rows_avx512(const CullBits& bits, const uint32_t
 SPT_CULL_TARGET inline uint64_t narrow_avx512(CullBits& bits, const MaskRef& mr, uint32_t j0, uint32_t j1, int64_t dx,
                                               int64_t r0, const uint64_t* live, bool opaque) {
     const int64_t q = dx + kBias, wi = q >> 6, sh = q & 63;
-    const __m128i left = _mm_cvtsi64_si128(sh), right = _mm_cvtsi64_si128(64 - sh);  // 64: gives 0
+    // Per-lane shift counts: one uop a shift (a count in an xmm register takes two); 64 gives 0.
+    const __m512i left = _mm512_set1_epi64(sh), right = _mm512_set1_epi64(64 - sh);
     const __m512i live_lo = _mm512_set1_epi64(int64_t(live[wi])), live_hi = _mm512_set1_epi64(int64_t(live[wi + 1]));
     uint64_t* lo = &bits.w[wi][r0];
     uint64_t* hi = &bits.w[wi + 1][r0];
@@ -312,13 +313,13 @@ SPT_CULL_TARGET inline uint64_t narrow_avx512(CullBits& bits, const MaskRef& mr,
         const __m512i f = _mm512_maskz_loadu_epi64(m, mr.foot + j0 + j);
         const __m512i b0 = _mm512_maskz_loadu_epi64(m, lo + j), b1 = _mm512_maskz_loadu_epi64(m, hi + j);
         // (f << sh) & live_lo & ~b0 | (f >> (64 - sh)) & live_hi & ~b1
-        const __m512i v0 = _mm512_ternarylogic_epi64(_mm512_sll_epi64(f, left), live_lo, b0, 0x40);  // a & b & ~c
-        const __m512i v1 = _mm512_ternarylogic_epi64(_mm512_srl_epi64(f, right), live_hi, b1, 0x40);
+        const __m512i v0 = _mm512_ternarylogic_epi64(_mm512_sllv_epi64(f, left), live_lo, b0, 0x40);  // a & b & ~c
+        const __m512i v1 = _mm512_ternarylogic_epi64(_mm512_srlv_epi64(f, right), live_hi, b1, 0x40);
         out |= uint64_t(_mm512_mask_test_epi64_mask(m, _mm512_or_si512(v0, v1), _mm512_or_si512(v0, v1))) << j;
         if (opaque) {
             const __m512i c = _mm512_maskz_loadu_epi64(m, mr.core + j0 + j);
-            _mm512_mask_storeu_epi64(lo + j, m, _mm512_or_si512(b0, _mm512_sll_epi64(c, left)));
-            _mm512_mask_storeu_epi64(hi + j, m, _mm512_or_si512(b1, _mm512_srl_epi64(c, right)));
+            _mm512_mask_storeu_epi64(lo + j, m, _mm512_or_si512(b0, _mm512_sllv_epi64(c, left)));
+            _mm512_mask_storeu_epi64(hi + j, m, _mm512_or_si512(b1, _mm512_srlv_epi64(c, right)));
         }
     }
     return out;
