@@ -106,7 +106,9 @@ public:
         : r_(r), b_(b), W_(r.header().width), H_(r.header().height), tiles_x_((W_ + kTileW - 1) / kTileW) {
         tiles_ = size_t(tiles_x_) * size_t((H_ + kTileH - 1) / kTileH);
         b_.masks.clear();
-        b_.start.assign(tiles_ + 1, 0);
+        // start[t + 1] counts tile t; past them a padding of tiles_x + 1 counters that add() and
+        // finish() may add 0 to (see add()).
+        b_.start.assign(tiles_ + 1 + size_t(tiles_x_) + 1, 0);
         if (b_.items.size() < strokes) {
             b_.items.resize(strokes);
             b_.range.resize(4 * strokes);
@@ -153,13 +155,15 @@ public:
         const uint32_t right = tx1 - tx0, down = ty1 - ty0;
         if (right <= 1 && down <= 1) {
             // Up to 2 x 2 tiles (any stroke no bigger than a tile): counted without a branch on
-            // how many, which mispredicted for the third of the strokes that cross a tile edge.
+            // how many (it mispredicted for the third of the strokes that cross a tile edge), by
+            // adding 0 or 1 to each counter of the 2 x 2 block. The four addresses always differ:
+            // adding 0 to c[0] again would make every count wait on the store before it.
             uint32_t* c = &b_.start[size_t(ty0) * size_t(tiles_x_) + tx0 + 1];
-            const size_t d = down * size_t(tiles_x_);
+            const size_t w = size_t(tiles_x_);
             c[0] += 1;
-            c[right] += right;
-            c[d] += down;
-            c[d + right] += down & right;
+            c[1] += right;
+            c[w] += down;
+            c[w + 1] += down & right;
             return;
         }
         for (uint32_t ty = ty0; ty <= ty1; ++ty)
@@ -170,22 +174,24 @@ public:
         for (size_t t = 0; t < tiles_; ++t) b_.start[t + 1] += b_.start[t];
         const uint32_t scratch = b_.start[tiles_];  // a slot past the lists: the writes for no tile
         b_.list.resize(size_t(scratch) + 1);
-        std::vector<uint32_t> fill(b_.start.begin(), b_.start.end() - 1);
+        // fill[t]: where tile t's next item goes; padded like start.
+        std::vector<uint32_t> fill(b_.start.begin(), b_.start.begin() + std::ptrdiff_t(tiles_));
+        fill.resize(tiles_ + size_t(tiles_x_) + 1, scratch);
         TileItem* list = b_.list.data();
+        const size_t w = size_t(tiles_x_);
         for (size_t k = 0; k < n_; ++k) {
             const uint16_t* r = &b_.range[4 * k];
             const TileItem item = b_.items[k];
             const uint32_t right = uint32_t(r[1] - r[0]), down = uint32_t(r[3] - r[2]);
-            if (right <= 1 && down <= 1) {  // as in add()
-                uint32_t* f = &fill[size_t(r[2]) * size_t(tiles_x_) + r[0]];
-                const size_t d = down * size_t(tiles_x_);
+            if (right <= 1 && down <= 1) {  // as in add(): the 2 x 2 block, four distinct counters
+                uint32_t* f = &fill[size_t(r[2]) * w + r[0]];
                 list[f[0]++] = item;
-                list[right ? f[right] : scratch] = item;
-                f[right] += right;
-                list[down ? f[d] : scratch] = item;
-                f[d] += down;
-                list[(down & right) ? f[d + right] : scratch] = item;
-                f[d + right] += down & right;
+                list[right ? f[1] : scratch] = item;
+                f[1] += right;
+                list[down ? f[w] : scratch] = item;
+                f[w] += down;
+                list[(down & right) ? f[w + 1] : scratch] = item;
+                f[w + 1] += down & right;
                 continue;
             }
             for (uint32_t ty = r[2]; ty <= r[3]; ++ty)
