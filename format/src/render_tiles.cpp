@@ -268,15 +268,20 @@ void draw_tiles(const RendererImpl& r, Canvas& canvas, const Bins& bins, const s
 
     const DenseOpsKernel dense_ops = dense_ops_kernel();  // Dense ops are planned only when there is one
     const bool dense = dense_ops != nullptr;
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    threads = unsigned(std::min<size_t>(threads, tiles));
+    // Threads take tiles from a shared counter. Alone, a plain one: a locked add waits for the
+    // tile copied out before it to reach the cache.
     std::atomic<size_t> next{0};
+    const bool shared = threads > 1;
     auto worker = [&]() {
         thread_local std::vector<uint8_t> buf;  // zeroed once; the apron then holds leftovers
         thread_local CullBits cull;
         thread_local CullPlan plan;
         buf.resize(kTileStride * size_t(kTileH));
         uint8_t* const origin = buf.data() + 3 * size_t(kApronX);
-        for (;;) {
-            const size_t tile = next.fetch_add(1, std::memory_order_relaxed);
+        for (size_t own = 0;;) {
+            const size_t tile = shared ? next.fetch_add(1, std::memory_order_relaxed) : own++;
             if (tile >= tiles) break;
             BlendTarget t;
             t.px = origin;
@@ -318,8 +323,6 @@ void draw_tiles(const RendererImpl& r, Canvas& canvas, const Bins& bins, const s
         }
     };
 
-    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    threads = unsigned(std::min<size_t>(threads, tiles));
     std::vector<std::thread> pool;
     for (unsigned k = 1; k < threads; ++k) {
         try {
