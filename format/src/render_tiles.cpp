@@ -199,6 +199,7 @@ public:
             if (right <= 1 && down <= 1) {  // as in add(): the 2 x 2 block, four distinct counters
                 uint32_t* f = &fill[size_t(r[2]) * w + r[0]];
                 list[f[0]++] = item;
+                if ((right | down) == 0) continue;  // most strokes: one tile, one store
                 list[right ? f[1] : scratch] = item;
                 f[1] += right;
                 list[down ? f[w] : scratch] = item;
