@@ -53,13 +53,14 @@ static_assert(kTileW == CullBits::kTileCols && kTileH == CullBits::kRows && kApr
 // so that a tile reads its strokes sequentially, twice (culling, then drawing); lists of item
 // numbers measured slower.
 // What binning needs of a stamp's footprint, found once a frame per (set, template,
-// orientation) triple: kind_slot[triple] is an index + 1 into kinds (0: not seen in this
-// frame; reset through kind_triples after each frame).
+// orientation) triple: kinds[triple] (its mask kUnseen until then; reset through kind_triples
+// after each frame), one load a stroke.
 struct StampKind {
-    int32_t x0 = 0, y0 = 0;  // SpanMask::x0, y0
-    int32_t w1 = 0, h1 = 0;  // columns - 1, rows - 1 (h1 < 0: an empty footprint)
-    uint32_t mask = 0;       // index into Bins::masks
-    uint64_t work = 0;       // SpanMask::box_work
+    static constexpr uint32_t kUnseen = ~0u;
+    int32_t x0 = 0, y0 = 0;    // SpanMask::x0, y0
+    int32_t w1 = 0, h1 = 0;    // columns - 1, rows - 1 (h1 < 0: an empty footprint)
+    uint32_t mask = kUnseen;   // index into Bins::masks
+    uint64_t work = 0;         // SpanMask::box_work
 };
 struct Bins {
     std::vector<TileItem> items;
@@ -67,9 +68,8 @@ struct Bins {
     std::vector<uint32_t> start;  // tiles + 1 offsets into list
     std::vector<TileItem> list;   // the items of each tile, in drawing order (and a scratch slot)
     std::vector<MaskRef> masks;
-    std::vector<StampKind> kinds;
-    std::vector<uint32_t> kind_triples;
-    std::vector<uint32_t> kind_slot;
+    std::vector<StampKind> kinds;        // per triple
+    std::vector<uint32_t> kind_triples;  // the triples seen in this frame
 };
 
 // Copies `rows` rows of `bytes` bytes (src_stride 0: the same row every time). A whole tile
@@ -126,22 +126,21 @@ public:
             b_.items.resize(strokes);
             b_.range.resize(4 * strokes);
         }
-        if (b_.kind_slot.size() < r.triples()) b_.kind_slot.resize(r.triples(), 0);
+        if (b_.kinds.size() < r.triples()) b_.kinds.resize(r.triples());
         templates_ = r.template_count();
         orientations_ = r.header().orientations.size();
     }
     // Clears the triple slots, ready for the next frame.
     ~Binner() {
-        for (uint32_t t : b_.kind_triples) b_.kind_slot[t] = 0;
+        for (uint32_t t : b_.kind_triples) b_.kinds[t].mask = StampKind::kUnseen;
         b_.kind_triples.clear();
-        b_.kinds.clear();
     }
 
     // What binning needs of a valid stamp triple's footprint; nullptr when it is not cached
     // (the stamp is then drawn from its inverse map).
     const StampKind* kind(uint32_t set, uint32_t tmpl, uint32_t orient) {
         const size_t t = (size_t(set) * templates_ + tmpl) * orientations_ + orient;  // RendererImpl::slot_index
-        if (const uint32_t k = b_.kind_slot[t]) return &b_.kinds[k - 1];
+        if (b_.kinds[t].mask != StampKind::kUnseen) return &b_.kinds[t];
         return add_kind(t, set, tmpl, orient);
     }
     // Adds a valid stamp at Q4 (x, y) of kind k.
@@ -239,10 +238,9 @@ private:
             m.dense_steps = f->dense_steps;
         }
         b_.masks.push_back(m);
-        b_.kinds.push_back(k);
         b_.kind_triples.push_back(uint32_t(t));
-        b_.kind_slot[t] = uint32_t(b_.kinds.size());
-        return &b_.kinds.back();
+        b_.kinds[t] = k;
+        return &b_.kinds[t];
     }
 
     const RendererImpl& r_;
