@@ -261,9 +261,23 @@ SPT_CULL_TARGET inline RowMasks row_masks(const uint32_t* extent, __mmask8 m, __
                       _mm512_min_epi64(_mm512_max_epi64(_mm512_sub_epi64(xe, k64), zero), k64))};
 }
 
+// The visible columns of eight rows from their visible bits in the two word columns of the
+// tile (v1, v2; k1, k2: the rows where each is non-zero): per row lo | hi << 8, [lo, hi) from
+// the first to the last visible column, 0, 0 when none; stored for the rows of m.
+SPT_CULL_TARGET inline void store_cols(__m512i v1, __m512i v2, __mmask8 k1, __mmask8 k2, __mmask8 m, uint8_t* cols) {
+    const __m512i zero = _mm512_setzero_si512();
+    // Lowest set bit: 63 - lzcnt(v & -v); highest: 63 - lzcnt(v).
+    const __m512i lz1 = _mm512_lzcnt_epi64(_mm512_and_si512(v1, _mm512_sub_epi64(zero, v1)));
+    const __m512i lz2 = _mm512_lzcnt_epi64(_mm512_and_si512(v2, _mm512_sub_epi64(zero, v2)));
+    __m512i lo = _mm512_mask_mov_epi64(zero, k2, _mm512_sub_epi64(_mm512_set1_epi64(127), lz2));
+    lo = _mm512_mask_mov_epi64(lo, k1, _mm512_sub_epi64(_mm512_set1_epi64(63), lz1));
+    __m512i hi = _mm512_mask_mov_epi64(zero, k1, _mm512_sub_epi64(_mm512_set1_epi64(64), _mm512_lzcnt_epi64(v1)));
+    hi = _mm512_mask_mov_epi64(hi, k2, _mm512_sub_epi64(_mm512_set1_epi64(128), _mm512_lzcnt_epi64(v2)));
+    _mm512_mask_cvtepi64_storeu_epi16(cols, m, _mm512_or_si512(lo, _mm512_slli_epi64(hi, 8)));
+}
+
 SPT_CULL_TARGET inline void visible_avx512(const CullBits& bits, const uint32_t* extent, uint32_t j0, uint32_t j1, int64_t dx,
                                            int64_t r0, int64_t width, uint8_t* cols) {
-    const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64);
     const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width);
     const uint32_t n = j1 - j0;
     for (uint32_t j = 0; j < n; j += 8) {
@@ -271,15 +285,7 @@ SPT_CULL_TARGET inline void visible_avx512(const CullBits& bits, const uint32_t*
         const RowMasks rm = row_masks(extent + j0 + j, m, vdx, vw);
         const __m512i v1 = _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[1][r0 + j]), rm.m1);
         const __m512i v2 = _mm512_andnot_si512(_mm512_maskz_loadu_epi64(m, &bits.w[2][r0 + j]), rm.m2);
-        const __mmask8 k1 = _mm512_test_epi64_mask(v1, v1), k2 = _mm512_test_epi64_mask(v2, v2);
-        // Lowest set bit: 63 - lzcnt(v & -v); highest: 63 - lzcnt(v).
-        const __m512i lz1 = _mm512_lzcnt_epi64(_mm512_and_si512(v1, _mm512_sub_epi64(zero, v1)));
-        const __m512i lz2 = _mm512_lzcnt_epi64(_mm512_and_si512(v2, _mm512_sub_epi64(zero, v2)));
-        __m512i lo = _mm512_mask_mov_epi64(zero, k2, _mm512_sub_epi64(_mm512_set1_epi64(127), lz2));
-        lo = _mm512_mask_mov_epi64(lo, k1, _mm512_sub_epi64(_mm512_set1_epi64(63), lz1));
-        __m512i hi = _mm512_mask_mov_epi64(zero, k1, _mm512_sub_epi64(k64, _mm512_lzcnt_epi64(v1)));
-        hi = _mm512_mask_mov_epi64(hi, k2, _mm512_sub_epi64(_mm512_set1_epi64(128), _mm512_lzcnt_epi64(v2)));
-        _mm512_mask_cvtepi64_storeu_epi16(cols + 2 * j, m, _mm512_or_si512(lo, _mm512_slli_epi64(hi, 8)));
+        store_cols(v1, v2, _mm512_test_epi64_mask(v1, v1), _mm512_test_epi64_mask(v2, v2), m, cols + 2 * j);
     }
 }
 
@@ -336,7 +342,6 @@ SPT_CULL_TARGET inline __m512i shift_by(__m512i src, int64_t s) {
 SPT_CULL_TARGET inline uint64_t span_avx512(CullBits& bits, const MaskRef& mr, uint32_t j0, uint32_t j1, int64_t dx,
                                             int64_t r0, int64_t width, uint8_t* cols, bool opaque) {
     static_assert(kBias == 64 && CullBits::kTileCols == 128, "tile columns are word columns 1 and 2");
-    const __m512i zero = _mm512_setzero_si512(), k64 = _mm512_set1_epi64(64);
     const __m512i vdx = _mm512_set1_epi64(dx), vw = _mm512_set1_epi64(width);
     uint64_t out = 0;
     const uint32_t n = j1 - j0;
@@ -350,14 +355,7 @@ SPT_CULL_TARGET inline uint64_t span_avx512(CullBits& bits, const MaskRef& mr, u
         const __mmask8 k1 = _mm512_test_epi64_mask(v1, v1), k2 = _mm512_test_epi64_mask(v2, v2);
         if (!(k1 | k2)) continue;
         out |= uint64_t(k1 | k2) << j;
-        // Lowest set bit: 63 - lzcnt(v & -v); highest: 63 - lzcnt(v) (as visible_avx512).
-        const __m512i lz1 = _mm512_lzcnt_epi64(_mm512_and_si512(v1, _mm512_sub_epi64(zero, v1)));
-        const __m512i lz2 = _mm512_lzcnt_epi64(_mm512_and_si512(v2, _mm512_sub_epi64(zero, v2)));
-        __m512i lo = _mm512_mask_mov_epi64(zero, k2, _mm512_sub_epi64(_mm512_set1_epi64(127), lz2));
-        lo = _mm512_mask_mov_epi64(lo, k1, _mm512_sub_epi64(_mm512_set1_epi64(63), lz1));
-        __m512i hi = _mm512_mask_mov_epi64(zero, k1, _mm512_sub_epi64(k64, _mm512_lzcnt_epi64(v1)));
-        hi = _mm512_mask_mov_epi64(hi, k2, _mm512_sub_epi64(_mm512_set1_epi64(128), _mm512_lzcnt_epi64(v2)));
-        _mm512_mask_cvtepi64_storeu_epi16(cols + 2 * j, m, _mm512_or_si512(lo, _mm512_slli_epi64(hi, 8)));
+        store_cols(v1, v2, k1, k2, m, cols + 2 * j);
         if (!opaque) continue;
         __m512i c1 = b1, c2 = b2;
         for (uint32_t k = 0; k < mr.core_words; ++k) {  // word k's bit 0 is tile column dx + 64k

@@ -212,44 +212,9 @@ __attribute__((target("avx512f,avx512bw"))) inline void span_avx512_t(uint8_t* d
 }
 
 // A dense box (raster.hpp: SpanMask::dense): Steps full 64-byte steps a row, no masks and no
-// size classes. Rows start on a pixel, so the colour pattern has the same phase in every row
-// and is prepared once per stroke. Opaque strokes use opaque_pairs64 on the stored pairs.
-template <bool Opaque, int Steps>
-__attribute__((target("avx512f,avx512bw"))) inline void dense_avx512_t(uint8_t* dst, size_t stride, const uint8_t* pairs,
-                                                                       uint32_t h, const __m512i* pat, uint32_t a8) {
-    if (Opaque) {
-        const __m512i k80 = _mm512_set1_epi8(int8_t(0x80));
-        __m512i ps[Steps];
-        for (int s = 0; s < Steps; ++s) ps[s] = _mm512_xor_si512(pat[(64 * s) % 3], k80);
-        for (uint32_t j = 0; j < h; ++j, dst += stride, pairs += 128 * Steps) {
-            for (int s = 0; s < Steps; ++s) {
-                const __m512i d = _mm512_xor_si512(_mm512_loadu_si512(dst + 64 * s), k80);
-                _mm512_storeu_si512(dst + 64 * s, opaque_pairs64(_mm512_loadu_si512(pairs + 128 * s),
-                                                                 _mm512_loadu_si512(pairs + 128 * s + 64), ps[s], d));
-            }
-        }
-    } else {
-        // Coverage is the low byte of every (c, 255 - c) pair.
-        const __m512i a = _mm512_set1_epi16(int16_t(a8)), z = _mm512_setzero_si512(), low = _mm512_set1_epi16(0xFF);
-        __m512i plo[Steps], phi[Steps];
-        for (int s = 0; s < Steps; ++s) {
-            const __m512i p = pat[(64 * s) % 3];
-            plo[s] = _mm512_unpacklo_epi8(p, z);
-            phi[s] = _mm512_unpackhi_epi8(p, z);
-        }
-        for (uint32_t j = 0; j < h; ++j, dst += stride, pairs += 128 * Steps) {
-            for (int s = 0; s < Steps; ++s) {
-                const __m512i d = _mm512_loadu_si512(dst + 64 * s);
-                const __m512i clo = _mm512_and_si512(_mm512_loadu_si512(pairs + 128 * s), low);
-                const __m512i chi = _mm512_and_si512(_mm512_loadu_si512(pairs + 128 * s + 64), low);
-                _mm512_storeu_si512(dst + 64 * s, _mm512_packus_epi16(lanes32<false>(_mm512_unpacklo_epi8(d, z), clo, plo[s], a),
-                                                                      lanes32<false>(_mm512_unpackhi_epi8(d, z), chi, phi[s], a)));
-            }
-        }
-    }
-}
-
-// The same for the rows named by `rows` (bit j: row j from dst), the others left alone.
+// size classes, for the rows named by `rows` (bit j: row j from dst; the others are left
+// alone). Rows start on a pixel, so the colour pattern has the same phase in every row and is
+// prepared once per stroke. Opaque strokes use opaque_pairs64 on the stored pairs.
 template <bool Opaque, int Steps>
 __attribute__((target("avx512f,avx512bw"))) inline void dense_rows_avx512_t(uint8_t* dst, size_t stride, const uint8_t* pairs,
                                                                             uint64_t rows, const __m512i* pat, uint32_t a8) {
@@ -446,12 +411,16 @@ __attribute__((target("avx512f,avx512bw"))) void dense_avx512(uint8_t* dst, size
                                                               uint32_t steps, Rgba8 c) {
     Pat512 pat;
     make_pattern512(pat, c);
-    if (c.a == 255) {
-        if (steps == 1) dense_avx512_t<true, 1>(dst, stride, cov, h, pat.p, c.a);
-        else dense_avx512_t<true, 2>(dst, stride, cov, h, pat.p, c.a);
-    } else {
-        if (steps == 1) dense_avx512_t<false, 1>(dst, stride, cov, h, pat.p, c.a);
-        else dense_avx512_t<false, 2>(dst, stride, cov, h, pat.p, c.a);
+    for (uint32_t j = 0; j < h; j += 64, dst += 64 * stride, cov += size_t(64) * 128 * steps) {
+        const uint32_t n = std::min<uint32_t>(64, h - j);
+        const uint64_t rows = n == 64 ? ~uint64_t(0) : (uint64_t(1) << n) - 1;
+        if (c.a == 255) {
+            if (steps == 1) dense_rows_avx512_t<true, 1>(dst, stride, cov, rows, pat.p, c.a);
+            else dense_rows_avx512_t<true, 2>(dst, stride, cov, rows, pat.p, c.a);
+        } else {
+            if (steps == 1) dense_rows_avx512_t<false, 1>(dst, stride, cov, rows, pat.p, c.a);
+            else dense_rows_avx512_t<false, 2>(dst, stride, cov, rows, pat.p, c.a);
+        }
     }
 }
 #endif

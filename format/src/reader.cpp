@@ -18,6 +18,19 @@ namespace {
 
 using detail::ByteSource;
 
+// Lends a reader's kept payload buffer to a Chunk for one decode and takes it back (with
+// whatever capacity it grew to) when the decode ends.
+struct SparePayload {
+    SparePayload(std::vector<uint8_t>& chunk, std::vector<uint8_t>& spare) : chunk_(chunk), spare_(spare) { chunk_.swap(spare_); }
+    ~SparePayload() { spare_.swap(chunk_); }
+    SparePayload(const SparePayload&) = delete;
+    SparePayload& operator=(const SparePayload&) = delete;
+
+private:
+    std::vector<uint8_t>& chunk_;
+    std::vector<uint8_t>& spare_;
+};
+
 struct Chunk {
     uint64_t offset = 0;  // of the length field
     uint32_t length = 0;
@@ -369,12 +382,7 @@ Status ReaderImpl::decode(size_t pos, FieldStats* stats, Frame& f) {
     const FrameEntry& e = frames_[pos];
     const std::string where = frame_where(e.index, e.offset);
     Chunk c;
-    c.payload.swap(spare_payload_);
-    struct GiveBack {
-        std::vector<uint8_t>& from;
-        std::vector<uint8_t>& to;
-        ~GiveBack() { to.swap(from); }
-    } give_back{c.payload, spare_payload_};
+    const SparePayload spare(c.payload, spare_payload_);
     if (auto st = read_chunk(e.offset, c, true); !st)
         return make_error(st.error().code, where + ": " + st.error().message, st.error().offset);
     if (!detail::is_type(c.type, "FRAM") || c.length < 8)
@@ -426,12 +434,7 @@ bool ReaderImpl::render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads
     const FrameEntry& e = frames_[pos];
     if (e.type != FrameType::Key || e.coding != Coding::Stored) return false;
     Chunk c;
-    c.payload.swap(spare_payload_);
-    struct GiveBack {
-        std::vector<uint8_t>& from;
-        std::vector<uint8_t>& to;
-        ~GiveBack() { to.swap(from); }
-    } give_back{c.payload, spare_payload_};
+    const SparePayload spare(c.payload, spare_payload_);
     // The checks of decode() and decode_stored_body(); anything unusual takes the general path.
     detail::FrameHeader fh;
     if (!read_chunk(e.offset, c, true) || !detail::is_type(c.type, "FRAM") || c.length < 8 ||
