@@ -146,3 +146,32 @@ TEST(RenderTiles, HugeFootprintIsDrawnUncachedWithinBudget) {
 }
 
 }  // namespace
+
+// Binning sorts a stroke into up to 2 x 2 tiles without a branch on how many: thousands of small
+// stamps on a 3 x 3-tile canvas, placed across tile edges and corners in every direction and in
+// every order (so that some reach a tile whose list is already complete), must draw as the
+// draw loop does.
+TEST(RenderTiles, SmallStrokesAcrossTileEdgesAndCorners) {
+    std::mt19937 rng(7);
+    auto U = [&](int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng); };
+    const auto t = templates(rng);
+    auto hd = make_header(384, 192, {{12, 6}, {4, 4}, {30, 14}}, 8);
+    auto r = make_renderer(hd, t);
+    // Dense frames, and sparse ones where a tile's first strokes stay visible.
+    for (int round = 0; round < 64; ++round) {
+        std::vector<spt::Stroke> v;
+        const int n = round < 4 ? 3000 : int(U(5, 60));
+        for (int i = 0; i < n; ++i) {
+            // Near a tile edge (x a multiple of 128, y of 64) most of the time.
+            const int64_t x = U(0, 2) ? 128 * U(0, 3) + U(-12, 12) : U(0, 383);
+            const int64_t y = U(0, 2) ? 64 * U(0, 3) + U(-8, 8) : U(0, 191);
+            const spt::Rgba8 c{uint8_t(U(0, 255)), uint8_t(U(0, 255)), uint8_t(U(0, 255)), uint8_t(U(0, 3) ? 255 : U(1, 254))};
+            v.push_back(stamp(uint8_t(U(0, 2)), uint8_t(U(0, i64(t.size()) - 1)), uint8_t(U(0, 7)), int32_t(16 * x + 8),
+                              int32_t(16 * y + 8), c));
+        }
+        const spt::Canvas expect = draw_loop(*r, hd, v);
+        spt::Canvas got;
+        ASSERT_TRUE(r->render(got, v).ok());
+        ASSERT_EQ(got.rgb, expect.rgb) << "round " << round;
+    }
+}
