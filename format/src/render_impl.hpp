@@ -50,9 +50,10 @@ public:
 
     const Header& header() const { return header_; }
 
-    // The header's (set, template, orientation) triples; a stamp's footprint slot is
-    // slot_index(set, tmpl, orient) < triples().
     size_t template_count() const { return templates_.size(); }
+    // The header's (set, template, orientation) triples; a stamp's footprint slot is
+    // slot_index(set, tmpl, orient) < triples() (render_tiles.cpp's binning computes the same
+    // index with the strides read once a frame).
     size_t triples() const { return header_.sets.size() * templates_.size() * header_.orientations.size(); }
     size_t slot_index(uint8_t set, uint8_t tmpl, uint8_t orient) const {
         return (size_t(set) * templates_.size() + tmpl) * header_.orientations.size() + orient;
