@@ -60,7 +60,8 @@ def import_spt(path, layering='SETS'):
     before = set(bpy.data.objects)
     r = bpy.ops.import_scene.spt(filepath=path, layering=layering)
     check(r == {'FINISHED'}, f"import returned {r}")
-    new = [o for o in bpy.data.objects if o not in before and o.type == 'GPENCIL']
+    import bl_gp
+    new = [o for o in bpy.data.objects if o not in before and o.type == bl_gp.OBJECT_TYPE]
     check(len(new) == 1, "import made one Grease Pencil object")
     return new[0]
 

@@ -16,6 +16,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bl_common as C  # noqa: E402
+import bl_gp as G  # noqa: E402
 
 zip_path, spt, work, media = C.args()
 if not C.spt_works(spt, "paint"):
@@ -63,7 +64,7 @@ def paint(label, output, **settings):
     r = bpy.ops.spt.paint_strokes(blocking=True)
     print(f"{label}: paint + import {time.time() - t:.1f} s")
     C.check(r == {'FINISHED'}, f"{label}: paint operator returned {r}")
-    new = [o for o in bpy.data.objects if o not in before and o.type == 'GPENCIL']
+    new = [o for o in bpy.data.objects if o not in before and o.type == G.OBJECT_TYPE]
     C.check(len(new) == 1, f"{label}: the painting was imported as one Grease Pencil object")
     C.check(os.path.isfile(output), f"{label}: the painting was written to {output}")
     return new[0]
@@ -84,10 +85,10 @@ def check_import(label, obj, path, want_frames):
     for layer in obj.data.layers:
         numbers = sorted(f.frame_number for f in layer.frames)
         C.check(numbers == list(range(scene.frame_start, scene.frame_start + want_frames)),
-                f"{label}: layer '{layer.info}' has GP frames {numbers}: one per video frame")
+                f"{label}: layer '{G.layer_names(obj)}' has GP frames {numbers}: one per video frame")
     for fr in frames:
         number = scene.frame_start + fr["index"]
-        n = sum(len(f.strokes) for l in obj.data.layers for f in l.frames if f.frame_number == number)
+        n = sum(G.stroke_count(f) for l in obj.data.layers for f in l.frames if f.frame_number == number)
         C.check(n == fr["live"], f"{label}: frame {fr['index']}: {n} strokes, spt info says {fr['live']}")
     return info
 

@@ -199,7 +199,7 @@ def export_file(context, obj, path: str, spt_path: str = "", stored: bool = Fals
     merge), write (frame coding + stored file), pack (spt pack)."""
     t_start = time.perf_counter()
     gp_read = 0.0
-    if obj is None or obj.type != 'GPENCIL':
+    if obj is None or obj.type != gp.OBJECT_TYPE:
         raise SptError("select a Grease Pencil object to export")
     scene = context.scene
     info = stream_info(obj, scene)

@@ -1,11 +1,7 @@
-"""Every Grease Pencil call of the add-on, for the GPv2 Python API (Blender 2.93 .. 4.2).
-
-Blender 4.3 replaced the API (GPv3); a gp_v3.py with the same functions can sit beside this one
-and gp.py picks by bpy.app.version. Nothing outside this module touches GP data directly.
-
-Units: 1 px = 1 mm. Point coordinates are metres in the object's XZ plane: x_px / 1000 -> X,
-y_px / 1000 -> -Z (image y grows downward). The object is not scaled, so brush sizes behave as
-usual when an artist draws.
+"""The Grease Pencil backend for the GPv2 data model (Blender 3.x .. 4.2): object type GPENCIL,
+bpy.data.grease_pencils, frame.strokes with per-stroke Python objects. gp.py picks this module or
+gp_v3.py by bpy.app.version; nothing outside the two backends (and gp_common.py, which they share)
+touches Grease Pencil data.
 
 Hidden per-stroke data of imported quads (stroke-level, so it is written in bulk and survives
 moving, rotating and recolouring; none of it affects a fill-only material):
@@ -24,14 +20,17 @@ live in the material: one per (alpha, N) used (polygon_material), fill_color = (
 import bpy
 import numpy as np
 
-SUPPORTED = bpy.app.version < (4, 3, 0)
+from .gp_common import (add_material, curve_material, frame_at_sorted, frame_index,  # noqa: F401
+                        material_color, new_camera, polygon_material, remove_since,
+                        snapshot, stencil_image, template_material)
+from .stroke_batch import FILL, LINE, QUAD, StrokeBatch  # noqa: F401
 
+NAME = "GPv2"
+OBJECT_TYPE = 'GPENCIL'
 ORDINAL_SCALE = 2.0 ** -24
 MAX_ORDINAL = 1 << 23
 UV_FILL = np.array([0.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0], dtype=np.float32)
 
-
-# ---------------------------------------------------------------- objects, camera, materials
 
 def new_object(context, name: str):
     gpd = bpy.data.grease_pencils.new(name)
@@ -40,78 +39,8 @@ def new_object(context, name: str):
     return obj
 
 
-def new_camera(context, name: str, width: int, height: int):
-    """An orthographic camera that frames the W x H mm canvas exactly."""
-    cam = bpy.data.cameras.new(name)
-    cam.type = 'ORTHO'
-    cam.ortho_scale = max(width, height) / 1000.0
-    cam.sensor_fit = 'AUTO'
-    obj = bpy.data.objects.new(name, cam)
-    obj.location = (width / 2000.0, -1.0, -height / 2000.0)
-    obj.rotation_euler = (np.pi / 2, 0.0, 0.0)
-    context.scene.collection.objects.link(obj)
-    return obj
-
-
-def stencil_image(name: str, coverage: np.ndarray):
-    """An image whose alpha is the template coverage (rows top first, 0..255), rgb white."""
-    h, w = coverage.shape
-    img = bpy.data.images.new(name, width=w, height=h, alpha=True)
-    px = np.ones((h, w, 4), dtype=np.float32)
-    px[:, :, 3] = coverage[::-1, :].astype(np.float32) / 255.0  # Blender rows are bottom first
-    img.pixels.foreach_set(px.ravel())
-    img.pack()
-    return img
-
-
-def template_material(name: str, image):
-    mat = bpy.data.materials.new(name)
-    bpy.data.materials.create_gpencil_data(mat)
-    gp = mat.grease_pencil
-    gp.show_stroke = False
-    gp.show_fill = True
-    gp.fill_style = 'TEXTURE'
-    gp.fill_image = image
-    gp.mix_factor = 1.0
-    gp.texture_clamp = True
-    gp.texture_offset = (-0.5, -0.5)
-    gp.fill_color = (1.0, 1.0, 1.0, 1.0)
-    return mat
-
-
-def curve_material(name: str):
-    mat = bpy.data.materials.new(name)
-    bpy.data.materials.create_gpencil_data(mat)
-    gp = mat.grease_pencil
-    gp.show_stroke = True
-    gp.show_fill = False
-    gp.color = (1.0, 1.0, 1.0, 1.0)
-    return mat
-
-
-def polygon_material(name: str, alpha: int):
-    """Solid fill, no line: white with the polygons' alpha, tinted per stroke by
-    vertex_color_fill (mix 1), so vertex paint recolours a polygon as it does a quad."""
-    mat = bpy.data.materials.new(name)
-    bpy.data.materials.create_gpencil_data(mat)
-    gp = mat.grease_pencil
-    gp.show_stroke = False
-    gp.show_fill = True
-    gp.fill_style = 'SOLID'
-    gp.fill_color = (1.0, 1.0, 1.0, alpha / 255.0)
-    return mat
-
-
-def add_material(obj, mat) -> int:
-    obj.data.materials.append(mat)
-    return len(obj.data.materials) - 1
-
-
-def material_color(mat, fill: bool):
-    if mat is None or mat.grease_pencil is None:
-        return (0.0, 0.0, 0.0, 1.0)
-    gp = mat.grease_pencil
-    return tuple(gp.fill_color if fill else gp.color)
+def remove_data(gpd):
+    bpy.data.grease_pencils.remove(gpd)
 
 
 # ---------------------------------------------------------------- layers and frames
@@ -121,6 +50,7 @@ def new_layer(obj, name: str):
 
 
 def layers(obj):
+    """Bottom to top."""
     return list(obj.data.layers)
 
 
@@ -136,95 +66,78 @@ def new_frame(layer, number: int):
     return layer.frames.new(number)
 
 
-def frame_index(layer):
-    """(sorted frame numbers, frames) of a layer, for frame_at_sorted."""
-    frs = sorted(layer.frames, key=lambda f: f.frame_number)
-    return [f.frame_number for f in frs], frs
+def remove_frame(layer, frame):
+    layer.frames.remove(frame)
 
 
-def frame_at_sorted(index, number: int):
-    """The frame shown at scene frame `number` (the latest key at or before it) or None."""
-    import bisect
-    numbers, frs = index
-    k = bisect.bisect_right(numbers, number) - 1
-    return frs[k] if k >= 0 else None
+def frame_stroke_count(frame) -> int:
+    return len(frame.strokes)
 
 
-# ---------------------------------------------------------------- writing strokes in bulk
+# ---------------------------------------------------------------- writing strokes
 #
 # Measured on Blender 3.4 (see the README): strokes.new() then points.add() in one loop is slower
 # than all strokes.new() first, then points.add() over the collection; per stroke only new(),
 # points.add() and the point coordinates (+ uv_fill) cross into Blender, every stroke-level value
 # is one foreach_set per frame. GPv2 has no bulk access to the points of several strokes.
 
-QUAD, LINE, FILL = 0, 1, 2   # fill_frame's stroke shapes: template quad, curve, polygon
-
-
-def fill_frame(frame, shape, quad_co, paths, material_index, fill_rgba, ordinal, set_hint, alpha):
-    """Adds n strokes to an EMPTY frame, in order.
-
-    shape (n,) QUAD / LINE / FILL; quad_co (nq, 12) float32: XYZ of the 4 corners of each quad,
-    in order; paths: per LINE or FILL stroke, in order: curves (co (m, 3) float32, pressure (m,),
-    strength (m,), vertex_color (m, 4)), polygons (co (m, 3),); per stroke (n,): material_index,
-    fill_rgba (n, 4) scene-linear, ordinal (drawing order in the file's frame), set_hint, alpha
-    (0..255, quads only)."""
+def fill_frame(frame, batch: StrokeBatch):
+    """Adds the batch's strokes to an EMPTY frame, in order."""
     strokes = frame.strokes
-    shape = np.asarray(shape)
-    n = shape.shape[0]
+    n = len(batch)
     if n == 0:
         return
     if len(strokes):
         raise ValueError("fill_frame needs an empty frame")
-    if np.max(ordinal) >= MAX_ORDINAL:
+    if np.max(batch.ordinal) >= MAX_ORDINAL:
         raise ValueError(f"a frame holds more than {MAX_ORDINAL} strokes")
+    shape = batch.shape
     new = strokes.new
     for _ in range(n):
         new()
     pts = [s.points for s in strokes]
     uv = UV_FILL
+    off = batch.offsets()
+    co = np.ascontiguousarray(batch.co, dtype=np.float32)
     if (shape == QUAD).all():
         for p in pts:
             p.add(4)
+        quad_co = co.reshape(n, 12)
         for p, r in zip(pts, quad_co):  # the hot loop of import
             p.foreach_set('co', r)
             p.foreach_set('uv_fill', uv)
     else:
-        qi = ci = 0
-        for p, k in zip(pts, shape.tolist()):
+        width = np.ascontiguousarray(batch.width, dtype=np.float32)
+        opacity = np.ascontiguousarray(batch.opacity, dtype=np.float32)
+        vcol = np.ascontiguousarray(batch.vcol, dtype=np.float32)
+        for i, (p, k) in enumerate(zip(pts, shape.tolist())):
+            s0, s1 = int(off[i]), int(off[i + 1])
+            p.add(s1 - s0)
+            p.foreach_set('co', co[s0:s1].ravel())
             if k == QUAD:
-                p.add(4)
-                p.foreach_set('co', quad_co[qi])
                 p.foreach_set('uv_fill', uv)
-                qi += 1
-                continue
-            path = paths[ci]
-            ci += 1
-            co = path[0]
-            p.add(co.shape[0])
-            p.foreach_set('co', np.ascontiguousarray(co, dtype=np.float32).ravel())
-            if k == FILL:
+            elif k == FILL:
                 # points.add() triangulated the outline while its points were all at the origin:
                 # right for convex quads only, so a polygon is triangulated again.
                 p.update()
-                continue
-            pressure, strength, vcol = path[1:]
-            p.foreach_set('pressure', np.ascontiguousarray(pressure, dtype=np.float32))
-            p.foreach_set('strength', np.ascontiguousarray(strength, dtype=np.float32))
-            p.foreach_set('vertex_color', np.ascontiguousarray(vcol, dtype=np.float32).ravel())
+            else:
+                p.foreach_set('pressure', width[s0:s1])
+                p.foreach_set('strength', opacity[s0:s1])
+                p.foreach_set('vertex_color', vcol[s0:s1].ravel())
     # The hidden per-stroke data (module docstring), one foreach_set per property.
     quad = shape == QUAD
     fill_like = shape != LINE
-    ordinal = np.asarray(ordinal, dtype=np.float64)
+    ordinal = np.asarray(batch.ordinal, dtype=np.float64)
     hardness = np.where(fill_like, 0.5 + ordinal * ORDINAL_SCALE, 1.0)
     aspect = np.ones((n, 2), dtype=np.float32)
-    aspect[:, 0] = np.where(quad, 0.5 + np.asarray(alpha, dtype=np.float32) / 512.0, 1.0)
+    aspect[:, 0] = np.where(quad, 0.5 + np.asarray(batch.alpha, dtype=np.float32) / 512.0, 1.0)
     uvt = np.zeros((n, 2), dtype=np.float32)
     uvt[~fill_like, 0] = ordinal[~fill_like]
     uvt[~fill_like, 1] = 1.0
-    fill = np.where(fill_like[:, None], np.asarray(fill_rgba, dtype=np.float32), 0.0)
-    for name, values, dtype in (("material_index", material_index, np.int32), ("use_cyclic", fill_like, bool),
+    fill = np.where(fill_like[:, None], np.asarray(batch.fill, dtype=np.float32), 0.0)
+    for name, values, dtype in (("material_index", batch.material, np.int32), ("use_cyclic", fill_like, bool),
                                 ("vertex_color_fill", fill, np.float32), ("hardness", hardness, np.float32),
-                                ("line_width", np.where(quad, np.asarray(set_hint) + 1, 1), np.int32),
+                                ("line_width", np.where(quad, np.asarray(batch.set_hint) + 1, 1), np.int32),
                                 ("aspect", aspect, np.float32), ("uv_translation", uvt, np.float32)):
         strokes.foreach_set(name, np.ascontiguousarray(values, dtype=dtype).ravel())
 

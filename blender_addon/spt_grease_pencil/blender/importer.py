@@ -15,9 +15,10 @@ import numpy as np
 from ..io import colors, geometry_np, stream_json
 from ..io.model import AFFINE, CURVE, POLYGON, STAMP, NeedsPack, SptError
 from ..io.reader import read_file
-from ..io.strokes_np import A, B, CURVE_ID, G, GRID, KIND, R, SET, TMPL, polygon_vertices
+from ..io.strokes_np import A, B, CURVE_ID, GRID, KIND, R, SET, TMPL, X, Y
 from ..spt_tool import pack_stored, temp_path
 from . import gp
+from .stroke_batch import FILL, LINE, QUAD, StrokeBatch, point_index
 
 LINEAR = np.array(colors.LINEAR, dtype=np.float32)
 
@@ -119,6 +120,23 @@ def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', 
         raise SptError(f"{path}: the file holds no frames")
     tables = list(f.live_lists())  # StrokeTables; inter frames share nothing mutable
     t1 = time.perf_counter()
+    made = gp.snapshot()
+    try:
+        obj, layer_of, total_strokes = _build(context, f, tables, path, layering, progress)
+    except BaseException:
+        gp.remove_since(made)  # nothing half-made stays in the scene
+        raise
+    summary = {"frames": len(tables), "strokes": total_strokes, "layers": len(layer_of),
+               "templates": len(info.templates), "complete": f.complete, "problem": f.problem,
+               "seconds": {"read": t1 - t0, "build": time.perf_counter() - t1}}
+    return obj, summary
+
+
+def _build(context, f, tables, path, layering, progress):
+    """The Grease Pencil object, its materials, layers and frames, the camera and the scene set-up;
+    returns (object, layers, stroke count)."""
+    info = f.info
+    h = info.header
     name = os.path.splitext(os.path.basename(path))[0] or "strokes"
     obj = gp.new_object(context, name)
 
@@ -167,10 +185,63 @@ def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', 
     _scene_setup(context, info, len(tables))
     cam = gp.new_camera(context, f"{name} camera", h.width, h.height)
     context.scene.camera = cam
-    summary = {"frames": len(tables), "strokes": total_strokes, "layers": len(layer_of),
-               "templates": len(info.templates), "complete": f.complete, "problem": f.problem,
-               "seconds": {"read": t1 - t0, "build": time.perf_counter() - t1}}
-    return obj, summary
+    return obj, layer_of, total_strokes
+
+
+def _pool_points(table, idx, columns):
+    """The pool entries of rows `idx` stacked: ((sum m, columns) int64, counts (len(idx),))."""
+    pieces = [table.curves[c] for c in table.rows[idx, CURVE_ID].tolist()]
+    counts = np.fromiter((p.shape[0] for p in pieces), dtype=np.int64, count=len(pieces))
+    if not pieces:
+        return np.zeros((0, columns), dtype=np.int64), counts
+    return np.concatenate(pieces).astype(np.int64).reshape(-1, columns), counts
+
+
+def frame_batch(table, idx, h, material, fill) -> StrokeBatch:
+    """The strokes `idx` of a file frame (in drawing order) as one layer frame's StrokeBatch: quads
+    (stamps and affine strokes) with their 4 corners, polygons with their outline in file order,
+    curves with per-point width, opacity and colour; everything in metres (1 px = 1 mm)."""
+    rows = table.rows[idx]
+    n = rows.shape[0]
+    kind = rows[:, KIND]
+    is_curve = kind == CURVE
+    is_poly = kind == POLYGON
+    quad = ~(is_curve | is_poly)
+    counts = np.full(n, 4, dtype=np.int64)
+    pi, pcounts = _pool_points(table, idx[is_poly], 2)
+    ci, ccounts = _pool_points(table, idx[is_curve], 3)
+    counts[is_poly] = pcounts
+    counts[is_curve] = ccounts
+    off = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(counts, out=off[1:])
+    m = int(off[-1])
+    xy = np.zeros((m, 2), dtype=np.float64)   # px
+    width = np.zeros(m, dtype=np.float32)
+    opacity = np.ones(m, dtype=np.float32)
+    vcol = np.zeros((m, 4), dtype=np.float32)
+    if quad.any():
+        q = np.flatnonzero(quad)
+        c = geometry_np.table_corners(rows[q], h.sets, h.orientations)
+        xy[point_index(off[q], counts[q])] = c.reshape(-1, 2)
+    if is_poly.any():
+        p = np.flatnonzero(is_poly)
+        first = np.repeat(rows[p][:, [X, Y]].astype(np.int64), pcounts, axis=0)
+        xy[point_index(off[p], pcounts)] = (pi + first).astype(np.float64) / 16.0
+    if is_curve.any():
+        k = np.flatnonzero(is_curve)
+        at = point_index(off[k], ccounts)
+        xy[at] = ci[:, :2].astype(np.float64) / 16.0
+        width[at] = ci[:, 2].astype(np.float64) / 16.0
+        opacity[at] = np.repeat(rows[k, A].astype(np.float32) / 255.0, ccounts)
+        vcol[at, 0:3] = np.repeat(LINEAR[rows[k, R:B + 1]], ccounts, axis=0)
+        vcol[at, 3] = 1.0
+    co = np.zeros((m, 3), dtype=np.float32)
+    co[:, 0] = xy[:, 0] / 1000.0
+    co[:, 2] = -xy[:, 1] / 1000.0
+    shape = np.where(quad, QUAD, np.where(is_curve, LINE, FILL)).astype(np.int8)
+    return StrokeBatch(shape=shape, counts=counts, co=co, width=width, opacity=opacity, vcol=vcol,
+                       material=material, fill=fill, ordinal=np.asarray(idx, dtype=np.int64),
+                       set_hint=rows[:, SET].astype(np.int64), alpha=rows[:, A].astype(np.int64))
 
 
 def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index, mat_of_poly):
@@ -182,12 +253,6 @@ def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index, m
     is_curve = kind == CURVE
     is_poly = kind == POLYGON
     quad = ~(is_curve | is_poly)
-    shape = np.where(quad, gp.QUAD, np.where(is_curve, gp.LINE, gp.FILL))
-    corners = np.zeros((n, 4, 3), dtype=np.float32)
-    if quad.any():
-        c = geometry_np.table_corners(rows[quad], h.sets, h.orientations) / 1000.0  # metres
-        corners[quad, :, 0] = c[:, :, 0]
-        corners[quad, :, 2] = -c[:, :, 1]
     fill = np.ones((n, 4), dtype=np.float32)
     fill[:, 0:3] = LINEAR[rows[:, R:B + 1]]
     material = np.where(is_curve, cmat_index, mat_of_tmpl[np.where(quad, rows[:, TMPL], 0)])
@@ -196,32 +261,5 @@ def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index, m
     for k, layer in layer_of.items():
         frame = gp.new_frame(layer, number)
         idx = np.flatnonzero(keys == k)
-        if idx.size == 0:
-            continue
-        paths = [_curve_points(table, i) if is_curve[i] else _polygon_points(table, i)
-                 for i in idx[~quad[idx]].tolist()]
-        qidx = idx[quad[idx]]
-        gp.fill_frame(frame, shape[idx], corners[qidx].reshape(-1, 12), paths, material[idx], fill[idx],
-                      idx, rows[idx, SET], rows[idx, A])
-
-
-def _polygon_points(table, i):
-    """GP points of polygon stroke i: (co metres,), the outline in file order."""
-    v = polygon_vertices(table.rows, table.curves, i).astype(np.float64) / 16000.0
-    co = np.zeros((v.shape[0], 3), dtype=np.float32)
-    co[:, 0] = v[:, 0]
-    co[:, 2] = -v[:, 1]
-    return (co,)
-
-
-def _curve_points(table, i):
-    """GP points of curve stroke i: (co metres, pressure = width px, strength, vertex colour)."""
-    r = table.rows[i]
-    pts = table.curves[r[CURVE_ID]].astype(np.float64) / 16.0
-    m = pts.shape[0]
-    co = np.zeros((m, 3), dtype=np.float32)
-    co[:, 0] = pts[:, 0] / 1000.0
-    co[:, 2] = -pts[:, 1] / 1000.0
-    vc = np.ones((m, 4), dtype=np.float32)
-    vc[:, 0:3] = LINEAR[[r[R], r[G], r[B]]]
-    return co, pts[:, 2].astype(np.float32), np.full(m, r[A] / 255.0, dtype=np.float32), vc
+        if idx.size:
+            gp.fill_frame(frame, frame_batch(table, idx, h, material[idx].astype(np.int32), fill[idx]))

@@ -77,8 +77,9 @@ class EXPORT_SCENE_OT_spt(bpy.types.Operator, ExportHelper):
 
     @classmethod
     def poll(cls, context):
+        from . import gp
         obj = context.active_object
-        return obj is not None and obj.type == 'GPENCIL'
+        return obj is not None and obj.type == gp.OBJECT_TYPE
 
     def execute(self, context):
         from . import exporter
