@@ -5,7 +5,9 @@ from bpy.props import StringProperty
 
 from .. import spt_tool
 
-PACKAGE = __package__.split(".")[0]
+# The add-on's own module: spt_grease_pencil as a legacy add-on, bl_ext.REPO.spt_grease_pencil as an
+# extension (Blender 4.2+).
+PACKAGE = __package__.rsplit(".", 1)[0]
 
 
 def spt_path(context=None) -> str:
