@@ -136,6 +136,51 @@ obj = paint("file pattern", out, source='FILE', filepath=os.path.join(work, "cli
 check_import("file pattern", obj, out, 6)
 check_export_renders_identically("pattern", obj, out)
 
+# The painted clip edited: one stroke of frame 3 moved by 3 px (+X) exports as exactly that
+# change, and the inter frames keep their motion coding (spt info: the same frame codings).
+from spt_grease_pencil.io import read_file  # noqa: E402
+out_stored = os.path.join(work, "pattern.stored.spt")
+subprocess.run([spt, "pack", out, "--stored", "-o", out_stored], check=True)
+orig_lists = list(read_file(out_stored).live_lists())
+fi = 3
+moved = None
+for l in obj.data.layers:
+    for s in G.strokes(G.frame(l, scene.frame_start + fi)):
+        if s.ordinal >= 0 and len(s.points) == 4:
+            moved = s.ordinal
+            G.move(s, 0.003, 0.0)
+            break
+    if moved is not None:
+        break
+C.check(moved is not None, "found an imported quad to move")
+exp = os.path.join(work, "pattern.moved.spt")
+bpy.context.view_layer.objects.active = obj
+C.check(bpy.ops.export_scene.spt(filepath=exp, stored=True) == {'FINISHED'}, "export of the edit")
+got = list(read_file(exp).live_lists())
+C.check(len(got) == len(orig_lists), "same frame count after the edit")
+for k, (a, b) in enumerate(zip(orig_lists, got)):
+    if k != fi:
+        C.check(a == b, f"frame {k} is untouched by an edit of frame {fi}")
+        continue
+    diff = [(i, x, y) for i, (x, y) in enumerate(zip(a, b)) if x != y]
+    C.check(len(a) == len(b) and len(diff) == 1 and diff[0][0] == moved, f"one stroke changed: {diff}")
+    _, x, y = diff[0]
+    C.check(y[4] - x[4] == 48 and y[5] == x[5] and y[:4] == x[:4] and y[6:] == x[6:],
+            f"the stroke moved by 3 px (48 Q4) and nothing else: {x} -> {y}")
+
+
+def codings(path):
+    inf = json.loads(subprocess.run([spt, "info", path, "--json", "--frames"], capture_output=True,
+                                    text=True, check=True).stdout)
+    return [(f["type"], f["motion_bytes"] > 0) for f in inf["frame_list"]]
+
+
+unedited = os.path.join(work, "pattern.exported.spt")
+C.check(any(m for _, m in codings(out)), "the painted clip has inter frames with motion")
+C.check(codings(unedited) == codings(out), f"unedited export keeps the frame codings and motion: "
+        f"{codings(unedited)} vs {codings(out)}")
+print(f"edit of a painted clip: stroke {moved} of frame {fi} moved by 3 px, exported as exactly that")
+
 # 3. A still: one frame.
 out = os.path.join(work, "still.spt")
 obj = paint("still", out, source='FILE', filepath=os.path.join(work, "clip", "c.0002.png"))

@@ -145,4 +145,18 @@ got = export_(obj, os.path.join(work, "hidden.spt"))
 C.check(all(s[0] != AFFINE for k, lst_ in enumerate(got) if k != fi for s in lst_), "hidden layer left out")
 C.check([s for s in got[fi] if s[0] == AFFINE] == rot, "the rotated stamp lives in its set's layer")
 C.check(got[0] == [s for s in orig_lists[0] if s[0] != AFFINE], "the rest of frame 0 unchanged")
+G.hide_layer(obj, "shapes", False)
+edited = export_(obj, os.path.join(work, "shown.spt"))
+
+# delete a key frame (on every layer): the key before it holds, as Blender shows it
+G.delete_key(obj, scene.frame_start + 2)
+got = export_(obj, os.path.join(work, "deleted-key.spt"))
+C.check(len(got) == len(edited) and got[2] == edited[1] and got[:2] == edited[:2] and got[3:] == edited[3:],
+        "a deleted key frame exports as the held frame before it")
+# insert a key frame after the end (a copy of the last), with the scene range grown to show it
+last = scene.frame_end
+G.copy_key(obj, last, last + 1)
+scene.frame_end = last + 1
+got = export_(obj, os.path.join(work, "inserted-key.spt"))
+C.check(len(got) == len(edited) + 1 and got[-1] == got[-2], "an inserted key frame exports as a new frame")
 print("OK")
