@@ -12,7 +12,7 @@ core_pkgs=(build-essential cmake ninja-build pkg-config git python3
            libopenimageio-dev openimageio-tools libopencv-dev libopenexr-dev)
 test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy
            blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils
-           mmdebstrap                   # Blender 4.3 and 5.2 roots (tests/blender/blender_root.sh)
+           mmdebstrap time              # Blender 4.3 and 5.2 roots (tests/blender/blender_root.sh)
            libjxl-tools webp optipng)   # the last three: bench/ comparisons only
 
 install_pkgs() {

@@ -1,5 +1,7 @@
-"""Times the add-on's import and export inside Blender (run by blender_bench.sh).
-args after --: ZIP SPT FILE.spt WORKDIR import|export"""
+"""Times the add-on's import and export inside Blender (run by blender_bench.sh through
+tests/blender/run_blender.sh, in each Blender version).
+args after --: ZIP SPT WORKDIR [MEDIA]; the environment gives SPT_BENCH_FILE (the .spt to import)
+and SPT_BENCH_MODE (import | export)."""
 
 import os
 import sys
@@ -7,7 +9,8 @@ import time
 
 import bpy
 
-zip_path, spt, path, work, mode = sys.argv[sys.argv.index("--") + 1:][:5]
+zip_path, spt, work = sys.argv[sys.argv.index("--") + 1:][:3]
+path, mode = os.environ["SPT_BENCH_FILE"], os.environ["SPT_BENCH_MODE"]
 import addon_utils  # noqa: E402
 bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
 addon_utils.enable("spt_grease_pencil", default_set=True)

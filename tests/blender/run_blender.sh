@@ -5,7 +5,8 @@
 # own (blender_root.sh: Debian 13 and unstable), made once and kept; the host-built spt is copied
 # in with its libraries, and the source tree, the build tree and the media folder are bind-mounted
 # at the same paths in a private mount namespace (gone with the process, nothing to unmount).
-# A Blender that cannot be had is a failure, never a skip.
+# A Blender that cannot be had is a failure, never a skip. SPT_EXTRA_MOUNTS (folders separated by
+# ':') are bound too.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 version="$1" script="$2" zip="$3" spt="$4" work="$5" media="${6:-}"
@@ -31,6 +32,8 @@ if [ -n "$spt" ]; then
   inner_spt=/usr/local/bin/spt
 fi
 mounts=("$src" "$build" "$work")
+IFS=: read -r -a extra <<< "${SPT_EXTRA_MOUNTS:-}"   # more folders to bind (bench/blender_bench.sh)
+for d in "${extra[@]}"; do [ -n "$d" ] && mounts+=("$(cd "$d" && pwd)"); done
 [ -n "$media" ] && [ -d "$media" ] && mounts+=("$(cd "$media" && pwd)")
 script_cmd='set -e; root="$1"; shift; n="$1"; shift
 for i in $(seq 1 "$n"); do d="$1"; shift; mkdir -p "$root$d"; mount --bind "$d" "$root$d"; done

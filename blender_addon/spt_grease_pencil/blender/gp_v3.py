@@ -16,6 +16,8 @@ Attributes the importer writes (CURVE domain unless said):
                           quads: the texture matrix that puts the template on the quad
                           (fill_texture_attributes); Blender keeps it attached to the points,
                           so the template follows moves, rotations and scales
+  fill_id, hide_stroke    quads and polygons: a fill of their own (a distinct id) and no line, as
+                          Blender 5.x decides per stroke (4.x by the material, as GPv2)
   spt_stroke (INT)        what the stroke was in the file: 1 quad (stamp or affine), 2 curve,
                           3 polygon; 0 (the default of strokes drawn in Blender): none
   spt_order (INT)         the stroke's index in the file frame's drawing order
@@ -51,6 +53,8 @@ _ATTRS = {
     "uv_rotation": ('FLOAT', 'CURVE', 'value', 1),
     "uv_translation": ('FLOAT2', 'CURVE', 'vector', 2),
     "uv_scale": ('FLOAT2', 'CURVE', 'vector', 2),
+    "fill_id": ('INT', 'CURVE', 'value', 1),
+    "hide_stroke": ('BOOLEAN', 'CURVE', 'value', 1),
     "spt_stroke": ('INT', 'CURVE', 'value', 1),
     "spt_order": ('INT', 'CURVE', 'value', 1),
     "spt_set": ('INT', 'CURVE', 'value', 1),
@@ -77,7 +81,11 @@ def remove_data(gpd):
 # ---------------------------------------------------------------- layers and frames
 
 def new_layer(obj, name: str):
-    return obj.data.layers.new(name, set_active=False)
+    """A new top layer, unlit: a painting's colours are its own, as spt renders them (GPv3 layers
+    are lit by default, and a scene without lights then renders them black)."""
+    layer = obj.data.layers.new(name, set_active=False)
+    layer.use_lights = False
+    return layer
 
 
 def layers(obj):
@@ -188,6 +196,11 @@ def fill_frame(frame, batch: StrokeBatch):
     _set(d, "vertex_color", batch.vcol)
     _set(d, "material_index", batch.material)
     _set(d, "cyclic", ~line)
+    # Blender 5.x fills a stroke only when its fill_id is not 0 (strokes of one id fill as one
+    # region) and hides its line by hide_stroke, not by the material: each quad and polygon is
+    # its own filled region with no line. Earlier versions keep them as inert attributes.
+    _set(d, "fill_id", np.where(line, 0, np.arange(1, n + 1)))
+    _set(d, "hide_stroke", ~line)
     _set(d, "fill_color", np.where(line[:, None], 0.0, np.asarray(batch.fill, dtype=np.float32)))
     _set(d, "fill_opacity", np.where(quad, np.asarray(batch.alpha, dtype=np.float64) / 255.0, 1.0))
     rot = np.zeros(n)

@@ -73,7 +73,12 @@ def _scene_setup(context, info, count):
     if world is None:
         import bpy
         world = scene.world = bpy.data.worlds.new("spt background")
-    world.color = tuple(float(LINEAR[c]) for c in h.background)
+    rgb = tuple(float(LINEAR[c]) for c in h.background)
+    world.color = rgb
+    # Blender 5.x always renders worlds through their nodes (world.color is the viewport's only).
+    bg = world.node_tree.nodes.get("Background") if getattr(world, "node_tree", None) else None
+    if bg is not None and getattr(world, "use_nodes", False):
+        bg.inputs["Color"].default_value = rgb + (1.0,)
 
 
 def _layer_keys(rows, layering, nsets):
