@@ -1,7 +1,7 @@
 """The educational decoder's modules, one section of format/SPEC.md each:
 
-errors.py       error classes (9.3) and little-endian fields (1)
-container.py    signature, chunks, HEAD, TMPL, scanning for frames (2, 3, 9.2)
+errors.py       error classes (9.5) and little-endian fields (1)
+container.py    signature, chunks, HEAD, TMPL, scanning for frames (2, 3, 9.3)
 templates.py    range-coded bitmap samples (7.6)
 strokes.py      the stroke model, stored records, the live list and motion (4, 5, 6)
 stored.py       coding 0 bodies (6)

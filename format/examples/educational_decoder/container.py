@@ -1,6 +1,6 @@
 """The container: signature, chunk framing and the HEAD and TMPL chunks (SPEC.md 2 and 3).
 
-This decoder finds frames by scanning the chunks in order (SPEC.md 9.2); it does not use the
+This decoder finds frames by scanning the chunks in order (SPEC.md 9.3); it does not use the
 index (`indx`), which only speeds up seeking."""
 import zlib
 from dataclasses import dataclass, field
@@ -155,7 +155,7 @@ class SptFile:
 
 
 def open_spt(data):
-    """Reads the header chunks, then scans the frames (SPEC.md 9.2, recovery by scanning)."""
+    """Reads the header chunks, then scans the frames (SPEC.md 9.3, recovery by scanning)."""
     chunks = read_chunks(data)
     first = next(chunks, None)
     if first is None or first.type != b"HEAD" or not first.crc_ok:

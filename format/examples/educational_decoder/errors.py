@@ -1,8 +1,8 @@
-"""The error classes of SPEC.md 9.3, and a reader of little-endian bytes (SPEC.md 1)."""
+"""The error classes of SPEC.md 9.5, and a reader of little-endian bytes (SPEC.md 1)."""
 
 
 class DecodeError(Exception):
-    """A file this decoder rejects; `code` is one of the classes of SPEC.md 9.3."""
+    """A file this decoder rejects; `code` is one of the classes of SPEC.md 9.5."""
 
     def __init__(self, code, message):
         super().__init__(f"{code}: {message}")

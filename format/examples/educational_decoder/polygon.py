@@ -21,7 +21,7 @@ class PolygonContexts:
         self.conic_m = [SInt() for _ in range(4)]
         self.conic_rx, self.conic_ry = SInt(), SInt()
         self.prev_aa = 0
-        self.prev_cs = (0, 0)
+        self.prev_rot = (0, 0)
 
 
 def decode_polygon(ss):
@@ -72,15 +72,15 @@ def decode_polygon(ss):
 def conic_steps(ss, pc, n, s):
     """Mode 2: the offsets e_i, f_i of vertices 1 .. n-1 from P_0, in lattice steps."""
     rc = ss.rc
-    C, S = pc.prev_cs
+    Rc, Rs = pc.prev_rot
     if rc.flag(pc.conic_same):
-        C = ONE - rc.uint(pc.conic_c)
-        S = rc.sint(pc.conic_s)
-        if abs(C) > ONE or abs(S) > ONE:
+        Rc = ONE - rc.uint(pc.conic_c)
+        Rs = rc.sint(pc.conic_s)
+        if abs(Rc) > ONE or abs(Rs) > ONE:
             ss.fail("conic rotation out of range")
-        if (C, S) == pc.prev_cs:
+        if (Rc, Rs) == pc.prev_rot:
             ss.fail("conic rotation equal to the previous one coded in full")
-    pc.prev_cs = (C, S)
+    pc.prev_rot = (Rc, Rs)
     t = rc.tree(pc.conic_shift)
     if t > 4:
         ss.fail(f"conic matrix shift {t}")
@@ -92,15 +92,15 @@ def conic_steps(ss, pc, n, s):
         m.append(v)
     if t < 4 and all(v % 2 == 0 for v in m):
         ss.fail("conic matrix shift is not the largest")
-    a, b, c, d = (v << t for v in m)
+    ma, mb, mc, md = (v << t for v in m)
     u, v = ONE, 0
     k = 30 + s
     steps = []
     for _ in range(n - 1):
-        u, v = (min(max((C * u - S * v + (1 << 29)) >> 30, -(1 << 31)), 1 << 31),
-                min(max((S * u + C * v + (1 << 29)) >> 30, -(1 << 31)), 1 << 31))
+        u, v = (min(max((Rc * u - Rs * v + (1 << 29)) >> 30, -(1 << 31)), 1 << 31),
+                min(max((Rs * u + Rc * v + (1 << 29)) >> 30, -(1 << 31)), 1 << 31))
         du, dv = u - ONE, v
-        pe = (a * du + b * dv + (1 << (k - 1))) >> k
-        pf = (c * du + d * dv + (1 << (k - 1))) >> k
+        pe = (ma * du + mb * dv + (1 << (k - 1))) >> k
+        pf = (mc * du + md * dv + (1 << (k - 1))) >> k
         steps.append((pe + rc.sint(pc.conic_rx), pf + rc.sint(pc.conic_ry)))
     return steps

@@ -11,7 +11,7 @@ class BodyPrefix:
     def __init__(self, body, key, header, what):
         r = ByteReader(body, what)
         self.removed_count = 0
-        self.block = 0
+        self.bs = 0
         self.edits = b""
         if key:
             self.added_count = r.varint("added_count")
@@ -22,11 +22,11 @@ class BodyPrefix:
             if present > 1:
                 fail("Unsupported", f"{what}: motion_present {present} is reserved")
             if present:
-                self.block = r.u16("block_size")
-                if not 8 <= self.block <= 256:
-                    fail("Corrupt", f"{what}: motion block size {self.block} outside 8..256")
+                self.bs = r.u16("block_size")
+                if not 8 <= self.bs <= 256:
+                    fail("Corrupt", f"{what}: motion block size {self.bs} outside 8..256")
             self.edits = r.take(r.varint("edit_length"), "edit stream")
-            if self.removed_count == 0 and not self.block and self.edits:
+            if self.removed_count == 0 and not self.bs and self.edits:
                 fail("Corrupt", f"{what}: the edit stream of a frame without edits is not empty")
         self.rest = r  # the reader stands at the first byte after the prefix
 
@@ -40,7 +40,7 @@ def median(a, b, d):
 def decode_edits(prefix, header, prev_live, what):
     """Returns (removed, motion) of an inter frame."""
     removed, motion = [], None
-    if prefix.removed_count == 0 and not prefix.block:
+    if prefix.removed_count == 0 and not prefix.bs:
         return removed, motion  # nothing coded: the stream is empty (checked by BodyPrefix)
     rc = RangeDecoder(prefix.edits, what + " edit stream")
     gap, run, mvx, mvy = UInt(), UInt(), SInt(), SInt()
@@ -51,9 +51,9 @@ def decode_edits(prefix, header, prev_live, what):
             fail("Corrupt", f"{what}: removal index {index} is not below the live length {prev_live}")
         removed.append(index)
         prev = index
-    if prefix.block:
-        B = prefix.block
-        cols, rows = -(-header.width // B), -(-header.height // B)
+    if prefix.bs:
+        bs = prefix.bs
+        cols, rows = -(-header.width // bs), -(-header.height // bs)
         v = [None] * (cols * rows)
 
         def prediction(i):
@@ -83,7 +83,7 @@ def decode_edits(prefix, header, prev_live, what):
                     fail("Corrupt", f"{what}: motion vector outside i16")
                 v[i] = (dx, dy)
                 i += 1
-        motion = Motion(B, cols, rows, v)
+        motion = Motion(bs, cols, rows, v)
     rc.end()
     return removed, motion
 
@@ -108,9 +108,10 @@ class StrokeStream:
         self.what = what
         self.header = header
         W, H = header.width, header.height
-        self.S, self.N, self.T = len(header.sets), len(header.orientations), template_count
-        tb = bits(self.T - 1) if self.T > 1 else 0
-        ob = bits(self.N - 1)
+        self.n_sets, self.n_orients = len(header.sets), len(header.orientations)
+        self.n_templates = template_count
+        tb = bits(self.n_templates - 1) if self.n_templates > 1 else 0
+        ob = bits(self.n_orients - 1)
         self.kind0, self.kind1, self.kind2 = contexts(4), contexts(4), contexts(4)
         self.same_set = Context()
         self.set_tree = Tree(4)
@@ -190,18 +191,18 @@ class StrokeStream:
     def stamp(self):
         rc = self.rc
         s = self.prev_set
-        if self.S > 1 and rc.flag(self.same_set):
+        if self.n_sets > 1 and rc.flag(self.same_set):
             s = rc.tree(self.set_tree)
-            if s == self.prev_set or s >= self.S:
+            if s == self.prev_set or s >= self.n_sets:
                 self.fail(f"set {s} coded in full")
         self.prev_set = s
         t = rc.tree(self.tmpl[s])
-        if t >= self.T:
-            self.fail(f"template {t} of {self.T}")
+        if t >= self.n_templates:
+            self.fail(f"template {t} of {self.n_templates}")
         o = self.prev_orient[s]
-        if self.N > 1 and rc.flag(self.same_orient[s]):
+        if self.n_orients > 1 and rc.flag(self.same_orient[s]):
             o = rc.tree(self.orient[s])
-            if o == self.prev_orient[s] or o >= self.N:
+            if o == self.prev_orient[s] or o >= self.n_orients:
                 self.fail(f"orientation {o} coded in full")
         self.prev_orient[s] = o
         x, y = self.position(0, 0), self.position(0, 1)
@@ -210,8 +211,8 @@ class StrokeStream:
     def affine(self):
         rc = self.rc
         t = rc.tree(self.affine_tmpl)
-        if t >= self.T:
-            self.fail(f"template {t} of {self.T}")
+        if t >= self.n_templates:
+            self.fail(f"template {t} of {self.n_templates}")
         tx, ty = self.position(1, 0), self.position(1, 1)
         axis = rc.flag(self.axis_aligned)
         if axis:

@@ -68,26 +68,26 @@ def template_coverage(t, U, V):
 
 def stamp_coverage(header, templates, s):
     """Yields (x, y, coverage) over the stamp's evaluation box clipped to the canvas."""
-    W, H = header.sets[s.set]
+    sw, sh = header.sets[s.set]
     C, S = header.orientations[s.orient]
     t = templates[s.template]
     grid = t.grid if t.kind != BITMAP else 0
     offsets = sample_offsets(grid)
     cx, cy = s.x >> 4, s.y >> 4
-    RX = (W * abs(C) + H * abs(S)) // 32768 + 1
-    RY = (W * abs(S) + H * abs(C)) // 32768 + 1
+    RX = (sw * abs(C) + sh * abs(S)) // 32768 + 1
+    RY = (sw * abs(S) + sh * abs(C)) // 32768 + 1
     for y in range(max(cy - RY, 0), min(cy + RY, header.height - 1) + 1):
         for x in range(max(cx - RX, 0), min(cx + RX, header.width - 1) + 1):
             i, j = x - cx, y - cy
             if grid < 2:
-                cov = template_coverage(t, 8 * (i * C + j * S) // W, 8 * (j * C - i * S) // H)
+                cov = template_coverage(t, 8 * (i * C + j * S) // sw, 8 * (j * C - i * S) // sh)
             else:
                 inside = 0
                 for oq in offsets:
                     for op in offsets:
                         i2, j2 = 256 * i + op - 128, 256 * j + oq - 128
-                        U = 8 * (i2 * C + j2 * S) // (256 * W)
-                        V = 8 * (j2 * C - i2 * S) // (256 * H)
+                        U = 8 * (i2 * C + j2 * S) // (256 * sw)
+                        V = 8 * (j2 * C - i2 * S) // (256 * sh)
                         inside += template_coverage(t, U, V) == 255
                 cov = share(inside, grid * grid)
             yield x, y, cov
@@ -139,8 +139,8 @@ def segment_covers(X, Y, p0, p1):
         T = (t << 24) // L
     Ex = 256 * qx - (T * ex) // 65536
     Ey = 256 * qy - (T * ey) // 65536
-    R = (w0 * (1 << 24) + T * (w1 - w0)) // (1 << 17)
-    return Ex * Ex + Ey * Ey <= R * R
+    hw = (w0 * (1 << 24) + T * (w1 - w0)) // (1 << 17)
+    return Ex * Ex + Ey * Ey <= hw * hw
 
 
 def curve_coverage(header, s):
@@ -172,7 +172,7 @@ def polygon_coverage(header, s):
             edges.append((Xk, Yk, Xn, Yn, 1))
         else:
             edges.append((Xn, Yn, Xk, Yk, -1))
-    offsets = sample_offsets(s.grid)
+    offsets = sample_offsets(s.grid)  # side = len(offsets)
     xs = [v[0] for v in s.vertices]
     ys = [v[1] for v in s.vertices]
     for y in range(max(min(ys) // 16, 0), min(max(ys) // 16, header.height - 1) + 1):

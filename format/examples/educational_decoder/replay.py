@@ -35,7 +35,7 @@ def below(r, m):
 
 def footprint_mean(canvas, header, templates, stamp):
     """The colour prediction and the activity class of an opaque stamp on the canvas."""
-    sa, sk, cells = 0, [0, 0, 0], []
+    sa, sk, cells = 0, [0, 0, 0], []  # Sa, Sk and the covered pixels
     for x, y, a in stamp_coverage(header, templates, stamp):
         if a > 0:
             px = canvas.pixel(x, y)
@@ -47,36 +47,36 @@ def footprint_mean(canvas, header, templates, stamp):
         return tuple(header.background), 0
     P = tuple((sk[k] + sa // 2) // sa for k in range(3))
     dev = sum(a * abs(px[1] - P[1]) for a, px in cells)
-    activity = 0 if dev < 2 * sa else 1 if dev < 6 * sa else 2 if dev < 16 * sa else 3
-    return P, activity
+    act = 0 if dev < 2 * sa else 1 if dev < 6 * sa else 2 if dev < 16 * sa else 3
+    return P, act
 
 
 def edge_orientation(canvas, header, px, py):
     """The predicted orientation o* and the strength class of the canvas around (px, py)."""
     W, H = header.width, header.height
 
-    def L(x, y):
+    def lum(x, y):
         r, g, b = canvas.pixel(min(max(x, 0), W - 1), min(max(y, 0), H - 1))
         return r + 2 * g + b
 
     jxx = jyy = jxy = 0
     for y in range(py - 3, py + 4):
         for x in range(px - 3, px + 4):
-            gx = (L(x + 1, y - 1) + 2 * L(x + 1, y) + L(x + 1, y + 1)
-                  - L(x - 1, y - 1) - 2 * L(x - 1, y) - L(x - 1, y + 1))
-            gy = (L(x - 1, y + 1) + 2 * L(x, y + 1) + L(x + 1, y + 1)
-                  - L(x - 1, y - 1) - 2 * L(x, y - 1) - L(x + 1, y - 1))
+            gx = (lum(x + 1, y - 1) + 2 * lum(x + 1, y) + lum(x + 1, y + 1)
+                  - lum(x - 1, y - 1) - 2 * lum(x - 1, y) - lum(x - 1, y + 1))
+            gy = (lum(x - 1, y + 1) + 2 * lum(x, y + 1) + lum(x + 1, y + 1)
+                  - lum(x - 1, y - 1) - 2 * lum(x, y - 1) - lum(x + 1, y - 1))
             jxx += gx * gx
             jyy += gy * gy
             jxy += gx * gy
-    A, Bv = jxx - jyy, 2 * jxy
-    s = abs(A) + abs(Bv)
-    if s == 0:
+    Ja, Jb = jxx - jyy, 2 * jxy
+    Js = abs(Ja) + abs(Jb)
+    if Js == 0:
         return 0, 0
-    strength = 1 if bits(s) < 20 else 2 if bits(s) < 25 else 3
+    strength = 1 if bits(Js) < 20 else 2 if bits(Js) < 25 else 3
     best, best_score = 0, None
     for k, (C, S) in enumerate(header.orientations):
-        score = -(A * (C * C - S * S) + Bv * 2 * C * S)
+        score = -(Ja * (C * C - S * S) + Jb * 2 * C * S)
         if best_score is None or score > best_score:
             best, best_score = k, score
     return best, strength
@@ -101,19 +101,19 @@ def decode_domain(rc, cx, W, H):
                 for xx in range(x, x + w):
                     inside[yy][xx] = True
     if rc.flag(cx["use_blocks"]):
-        B = 8 + rc.uint(cx["block_size"])
-        if B > 256:
-            fail("Corrupt", f"{rc.what}: block size {B}")
-        cols, rows = -(-W // B), -(-H // B)
-        mask = [[0] * cols for _ in range(rows)]
-        for r in range(rows):
-            for c in range(cols):
+        mbs = 8 + rc.uint(cx["block_size"])
+        if mbs > 256:
+            fail("Corrupt", f"{rc.what}: block size {mbs}")
+        mcols, mrows = -(-W // mbs), -(-H // mbs)
+        mask = [[0] * mcols for _ in range(mrows)]
+        for r in range(mrows):
+            for c in range(mcols):
                 left = mask[r][c - 1] if c > 0 else 0
                 up = mask[r - 1][c] if r > 0 else 0
                 mask[r][c] = rc.flag(cx["mask"][left + 2 * up])
         for y in range(H):
             for x in range(W):
-                inside[y][x] = inside[y][x] and mask[y // B][x // B] == 1
+                inside[y][x] = inside[y][x] and mask[y // mbs][x // mbs] == 1
     return [(x, y) for y in range(H) for x in range(W) if inside[y][x]]
 
 
@@ -127,11 +127,11 @@ def decode_replay(body, key, header, templates, prev_live, what):
         removed, motion = decode_edits(prefix, header, len(prev_live), what)
         base = remove_and_move(prev_live, removed, motion, what)
     r = prefix.rest
-    seed, flags, q = r.u64("seed"), r.u8("flags"), r.u8("color_step")
+    seed, flags, step = r.u64("seed"), r.u8("flags"), r.u8("color_step")
     if flags & ~1:
         fail("Unsupported", f"{what}: reserved coding-2 flags")
-    if not 1 <= q <= 32:
-        fail("Corrupt", f"{what}: colour step {q} outside 1..32")
+    if not 1 <= step <= 32:
+        fail("Corrupt", f"{what}: colour step {step} outside 1..32")
     if prefix.added_count < 1:
         fail("Corrupt", f"{what}: a coding-2 frame without strokes")
     drawn = flags & 1
@@ -142,8 +142,8 @@ def decode_replay(body, key, header, templates, prev_live, what):
         draw(canvas, header, templates, s)
 
     W, H = header.width, header.height
-    N, T = len(header.orientations), len(templates)
-    ob = bits(N - 1)
+    n_orients, n_templates = len(header.orientations), len(templates)
+    ob = bits(n_orients - 1)
     rc = RangeDecoder(r.take(r.left(), "stroke stream"), what + " stroke stream")
     cx = {"use_rects": Context(), "use_blocks": Context(), "rect_count": UInt(), "rect_xy": UInt(),
           "rect_wh": UInt(), "block_size": UInt(), "count": UInt(), "mask": contexts(4),
@@ -152,35 +152,35 @@ def decode_replay(body, key, header, templates, prev_live, what):
           "color": [[[Res8() for _ in range(4)] for _ in range(4)] for _ in range(3)]}
     added = []
     for s in range(len(header.sets)):
-        c = min(s, 3)  # the set class
+        sc = min(s, 3)  # the set class
         domain = decode_domain(rc, cx, W, H)
         K = rc.uint(cx["count"])
         if len(added) + K > prefix.added_count:
             fail("Corrupt", f"{what}: set {s} has more strokes than added_count")
-        if K > 0 and (not domain or T == 0):
+        if K > 0 and (not domain or n_templates == 0):
             fail("Corrupt", f"{what}: set {s} has strokes but no candidates")
         prev, g_prev = -1, 0
         for _ in range(K):
-            gap = rc.uint(cx["gap"][c][min(5, bits(g_prev))])
+            gap = rc.uint(cx["gap"][sc][min(5, bits(g_prev))])
             n = prev + 1 + gap
             if n >= 1 << 48:
                 fail("Corrupt", f"{what}: candidate number {n} is not below 2^48")
             prev, g_prev = n, gap
             px, py = domain[below(draw_value(seed, s, n, 1), len(domain))]
-            template = below(draw_value(seed, s, n, 2), T)
+            template = below(draw_value(seed, s, n, 2), n_templates)
             if drawn:
-                orient = below(draw_value(seed, s, n, 3), N)
+                orient = below(draw_value(seed, s, n, 3), n_orients)
             else:
                 o_star, strength = edge_orientation(canvas, header, px, py)
-                d = rc.tree(cx["orient"][c][strength])
-                if d >= N:
-                    fail("Corrupt", f"{what}: orientation difference {d} of {N}")
-                orient = (o_star + d) % N
+                d = rc.tree(cx["orient"][sc][strength])
+                if d >= n_orients:
+                    fail("Corrupt", f"{what}: orientation difference {d} of {n_orients}")
+                orient = (o_star + d) % n_orients
             stamp = Stamp(s, template, orient, 16 * px + 8, 16 * py + 8, (0, 0, 0, 255))
-            P, a = footprint_mean(canvas, header, templates, stamp)
-            G = P[1] + q * rc.res8(cx["color"][0][c][a], allow_128=True)
-            R = min(max(G + P[0] - P[1], 0), 255) + q * rc.res8(cx["color"][1][c][a], allow_128=True)
-            B = min(max(G + P[2] - P[1], 0), 255) + q * rc.res8(cx["color"][2][c][a], allow_128=True)
+            P, act = footprint_mean(canvas, header, templates, stamp)
+            G = P[1] + step * rc.res8(cx["color"][0][sc][act], allow_128=True)
+            R = min(max(G + P[0] - P[1], 0), 255) + step * rc.res8(cx["color"][1][sc][act], allow_128=True)
+            B = min(max(G + P[2] - P[1], 0), 255) + step * rc.res8(cx["color"][2][sc][act], allow_128=True)
             if not (0 <= G <= 255 and 0 <= R <= 255 and 0 <= B <= 255):
                 fail("Corrupt", f"{what}: colour off 0..255")
             stamp.rgba = (R, G, B, 255)

@@ -50,14 +50,14 @@ def decode_stored(body, key, header, what):
         if present > 1:
             fail("Unsupported", f"{what}: motion_present {present} is reserved")
         if present:
-            block, cols, rows = r.u16("block_size"), r.u16("cols"), r.u16("rows")
-            if not 8 <= block <= 256:
-                fail("Corrupt", f"{what}: motion block size {block} outside 8..256")
-            if cols != -(-header.width // block) or rows != -(-header.height // block):
+            bs, cols, rows = r.u16("block_size"), r.u16("cols"), r.u16("rows")
+            if not 8 <= bs <= 256:
+                fail("Corrupt", f"{what}: motion block size {bs} outside 8..256")
+            if cols != -(-header.width // bs) or rows != -(-header.height // bs):
                 fail("Corrupt", f"{what}: motion field is not the canvas's cols x rows")
             if cols * rows * 4 > r.left():
                 fail("Corrupt", f"{what}: motion field cannot fit the body")
-            motion = Motion(block, cols, rows, [(r.i16("dx"), r.i16("dy")) for _ in range(cols * rows)])
+            motion = Motion(bs, cols, rows, [(r.i16("dx"), r.i16("dy")) for _ in range(cols * rows)])
     added = read_records(r, r.u32("stroke_count" if key else "added_count"), header.version_minor)
     r.end()
     return removed, motion, added

@@ -117,14 +117,14 @@ def live_hash(live):
 # ---- SPEC.md 5: applying a frame ----
 
 class Motion:
-    """A motion field: block size B and cols x rows vectors (dx, dy), row-major."""
+    """A motion field: block size bs and cols x rows vectors (dx, dy), row-major."""
 
-    def __init__(self, block, cols, rows, vectors):
-        self.block, self.cols, self.rows, self.vectors = block, cols, rows, vectors
+    def __init__(self, bs, cols, rows, vectors):
+        self.bs, self.cols, self.rows, self.vectors = bs, cols, rows, vectors
 
     def vector_at(self, px, py):
-        bx = min(max(px // (16 * self.block), 0), self.cols - 1)  # // floors, as floor_div
-        by = min(max(py // (16 * self.block), 0), self.rows - 1)
+        bx = min(max(px // (16 * self.bs), 0), self.cols - 1)  # // floors, as floor_div
+        by = min(max(py // (16 * self.bs), 0), self.rows - 1)
         return self.vectors[by * self.cols + bx]
 
 
