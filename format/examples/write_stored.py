@@ -3,7 +3,8 @@
 
 It shows what a painter in any language needs to write .spt: chunks with CRC-32, a HEAD, one
 analytic template, key frames of stamp strokes, the index and IEND. `spt pack` then re-codes
-the file with the range coder, and `spt render` renders it.
+the file with the range coder, `spt render` renders it, and educational_decoder.py (next to
+this script, written from the spec alone) reads it back.
 
     python3 write_stored.py out.spt [frames]
 """
