@@ -1,6 +1,8 @@
-// Small shared definitions: version string, error code names, default orientation table.
+// Small shared definitions: version string, names of error codes, codings, fields and template
+// kinds, the default orientation table.
 #include <cmath>
 
+#include "spt/coding.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
 #include "spt/version.hpp"
@@ -24,6 +26,42 @@ const char* code_name(Code c) {
         case Code::LimitExceeded: return "limit exceeded";
         case Code::InvalidArgument: return "invalid argument";
         case Code::BadState: return "bad state";
+    }
+    return "unknown";
+}
+
+const char* coding_name(Coding c) {
+    switch (c) {
+        case Coding::Stored: return "stored";
+        case Coding::Range: return "range";
+        case Coding::Replay: return "replay";
+    }
+    return "reserved";
+}
+
+const char* field_name(Field f) {
+    switch (f) {
+        case Field::Count: return "counts";
+        case Field::Kind: return "kind";
+        case Field::SetTemplate: return "set/template";
+        case Field::Orientation: return "orientation";
+        case Field::Position: return "position";
+        case Field::Color: return "colour";
+        case Field::Alpha: return "alpha";
+        case Field::Geometry: return "geometry";
+        case Field::Removal: return "removals";
+        case Field::Motion: return "motion";
+        case Field::Candidates: return "candidates";
+    }
+    return "?";
+}
+
+const char* template_kind_name(TemplateKind k) {
+    switch (k) {
+        case TemplateKind::Bitmap: return "bitmap";
+        case TemplateKind::Ellipse: return "ellipse";
+        case TemplateKind::Rectangle: return "rectangle";
+        case TemplateKind::Triangle: return "triangle";
     }
     return "unknown";
 }

@@ -10,7 +10,7 @@
 #include "byte_io.hpp"
 #include "spt/limits.hpp"
 #include "spt/types.hpp"
-#include "spt/writer.hpp"
+#include "spt/coding.hpp"
 
 namespace spt::detail {
 

@@ -1,9 +1,8 @@
 // Stamp footprints, computed once per (set, template, orientation) (SPEC 8.2: a stamp's
 // coverage depends only on the triple and the pixel offset). Two caches:
 //  - span footprints for drawing (raster::SpanMask, with a dense box when narrow), under the
-//    budget of render.hpp: one
-//    whose evaluation box could need more than Renderer::kMaxFootprintBytes, or that would
-//    take the cache past Renderer::kFootprintCacheBytes, is not stored; such stamps are drawn
+//    budget of render_impl.hpp: one whose evaluation box could need more than
+//    kMaxFootprintBytes, or that would take the cache past kFootprintCacheBytes, is not stored; such stamps are drawn
 //    through their inverse map row by row (same pixels, more work per stroke);
 //  - public Masks (stamp_footprint()), built only when a caller asks for one.
 // Both are built under a lock and published through atomics; readers never lock.

@@ -13,6 +13,10 @@
 
 namespace spt {
 
+namespace detail {
+struct StampSource;
+}
+
 class RendererImpl final : public Renderer {
 public:
     RendererImpl(const Header& h, const std::vector<Template>& t);
@@ -24,13 +28,20 @@ public:
     Status render(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const override;
     size_t footprint_cache_bytes() const override { return cache_bytes_.load(std::memory_order_relaxed); }
 
-    // Renders a key frame given as n coding-0 stamp records (SPEC 6: 16 bytes each) straight
-    // into the tiles, without a Stroke list: the same bytes as render() of the decoded strokes.
-    // Returns false, having drawn nothing, when a record is not a valid stamp with a cached
-    // footprint or the strokes' fill work may exceed work_limit (SPEC 10); the caller then
-    // takes the general path, which reports what is wrong.
-    bool render_stamp_records(Canvas& canvas, const uint8_t* records, size_t n, unsigned threads,
-                              uint64_t work_limit) const;
+    // Memory budget of the span footprints draw() and render() cache (one per set, template and
+    // orientation used, stored as per-row spans of non-zero coverage, 3 bytes a pixel). A
+    // footprint whose evaluation box could need more than kMaxFootprintBytes, or that would
+    // take the cache past kFootprintCacheBytes, is not stored: such stamps are evaluated per
+    // stroke through their inverse map (same pixels, slower). A 4096 x 4096 set at 45 degrees
+    // (about 100 MB) is drawn that way; sets up to about 1400 x 1400 are cached. A Mask that
+    // stamp_footprint() is asked for is always built, whatever its size (at most the
+    // evaluation box of a 4096 x 4096 set, about 34 MB), and counted in footprint_cache_bytes().
+    static constexpr size_t kFootprintCacheBytes = size_t(256) << 20;
+    static constexpr size_t kMaxFootprintBytes = size_t(16) << 20;
+
+    // detail::render_stamp_frame (stamp_frame.hpp): a key frame of stamps binned straight from
+    // their source, without a Stroke list.
+    bool render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads, uint64_t work_limit) const;
     // Range and reference checks of one stroke (SPEC 8.7).
     Status check(const Stroke& s) const;
     // check(s) of a stamp, without the message: true when it passes.

@@ -47,6 +47,21 @@ std::string check_region(const ReplayRegion& r, uint32_t width, uint32_t height)
     return {};
 }
 
+struct CandidateDomain::Band {
+    uint32_t y0 = 0, y1 = 0;             // rows [y0, y1)
+    uint64_t start = 0;                  // allowed pixels before the band
+    uint64_t per_row = 0;                // allowed pixels in each of its rows
+    std::vector<uint32_t> x0, x1;        // sorted disjoint intervals [x0, x1)
+    std::vector<uint64_t> before;        // allowed pixels of a row before interval i
+};
+
+CandidateDomain::CandidateDomain() = default;
+CandidateDomain::~CandidateDomain() = default;
+CandidateDomain::CandidateDomain(const CandidateDomain&) = default;
+CandidateDomain::CandidateDomain(CandidateDomain&&) noexcept = default;
+CandidateDomain& CandidateDomain::operator=(const CandidateDomain&) = default;
+CandidateDomain& CandidateDomain::operator=(CandidateDomain&&) noexcept = default;
+
 CandidateDomain::CandidateDomain(uint32_t width, uint32_t height, const ReplayRegion& region)
     : width_(width), height_(height) {
     all_ = !region.use_rects && !region.use_blocks;

@@ -13,23 +13,6 @@
 
 namespace spt {
 
-const char* field_name(Field f) {
-    switch (f) {
-        case Field::Count: return "counts";
-        case Field::Kind: return "kind";
-        case Field::SetTemplate: return "set/template";
-        case Field::Orientation: return "orientation";
-        case Field::Position: return "position";
-        case Field::Color: return "colour";
-        case Field::Alpha: return "alpha";
-        case Field::Geometry: return "geometry";
-        case Field::Removal: return "removals";
-        case Field::Motion: return "motion";
-        case Field::Candidates: return "candidates";
-    }
-    return "?";
-}
-
 Writer::~Writer() = default;
 
 namespace {

@@ -81,16 +81,6 @@ void stroke(std::string& o, const Stroke& s) {
     }
 }
 
-const char* kind_name(TemplateKind k) {
-    switch (k) {
-        case TemplateKind::Bitmap: return "bitmap";
-        case TemplateKind::Ellipse: return "ellipse";
-        case TemplateKind::Rectangle: return "rectangle";
-        case TemplateKind::Triangle: return "triangle";
-    }
-    return "?";
-}
-
 }  // namespace
 
 std::string export_json(const Document& doc) {
@@ -114,7 +104,7 @@ std::string export_json(const Document& doc) {
         const Template& t = doc.info.templates[i];
         o += i ? ",\n    " : "\n    ";
         o += "{\"kind\": \"";
-        o += kind_name(t.kind);
+        o += template_kind_name(t.kind);
         o += "\"";
         if (!t.name.empty()) { o += ", \"name\": "; json::append_string(o, t.name); }
         if (t.supersample) o += ", \"supersample\": " + std::to_string(t.supersample);

@@ -32,6 +32,24 @@ std::vector<uint8_t> reference_render(const std::string& path, size_t f) {
 
 }  // namespace
 
+// Every coding is named by libspt (spt::coding_name): a coding-2 file's frames say "replay",
+// in the table and in JSON, not "stored".
+TEST(CliInfo, NamesEveryCoding) {
+    SKIP_WITHOUT_TOOL();
+    TempDir d;
+    const std::string golden = std::string(SPT_SOURCE_DIR) + "/tests/format/golden/";
+    for (const auto& [file, coding] : {std::pair<const char*, const char*>{"replay_paint.spt", "replay"},
+                                       {"replay_paint.stored.spt", "stored"}, {"random_mix.spt", "range"}}) {
+        auto j = run_spt(d, {"info", golden + file, "--json", "--frames", "--no-fields"});
+        ASSERT_EQ(j.code, 0) << j.err;
+        EXPECT_EQ(parse_json(j.out)["frame_list"][0]["coding"].str, coding) << file;
+        auto t = run_spt(d, {"info", golden + file, "--frames", "--no-fields"});
+        ASSERT_EQ(t.code, 0) << t.err;
+        EXPECT_NE(t.out.find(std::string(" key ") + (std::string(coding) == "range" ? " " : "") + coding + " "),
+                  std::string::npos) << file << "\n" << t.out;
+    }
+}
+
 TEST(CliInfo, TextAndJsonFields) {
     SKIP_WITHOUT_TOOL();
     TempDir d;

@@ -288,7 +288,7 @@ TEST(RenderReference, PolygonsEqualReference) {
         }
 }
 
-// Stamps too big for the footprint cache (render.hpp: kMaxFootprintBytes) are drawn through
+// Stamps too big for the footprint cache (render_impl.hpp: kMaxFootprintBytes) are drawn through
 // their inverse map instead; the pixels must not change.
 TEST(RenderReference, UncachedHugeStampsEqualReference) {
     std::mt19937 rng(11);

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "../format/src/raster.hpp"
+#include "../format/src/render_impl.hpp"
 #include "format/render_test_util.hpp"
 
 namespace {
@@ -138,7 +139,7 @@ TEST(RenderTiles, HugeFootprintIsDrawnUncachedWithinBudget) {
                               {uint8_t(30 * o), uint8_t(80 * set), 200, uint8_t(o % 3 ? 255 : 120)}));
     spt::Canvas got;
     ASSERT_TRUE(r->render(got, v).ok());
-    EXPECT_LT(r->footprint_cache_bytes(), spt::Renderer::kFootprintCacheBytes);
+    EXPECT_LT(r->footprint_cache_bytes(), spt::RendererImpl::kFootprintCacheBytes);
     EXPECT_LT(r->footprint_cache_bytes(), size_t(64) << 20);
     // Uncached stamps take the inverse-map path in both; render_reference_test checks the
     // pixels against the spec's formulas.

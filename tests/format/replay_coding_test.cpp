@@ -14,6 +14,20 @@ using namespace spt;
 
 namespace {
 
+// below() is the high half of a 128-bit product; compilers without a 128-bit integer get it
+// from mul_high64, which must agree with it everywhere (edges and random values).
+TEST(ReplayGenerator, PortableHighProductAgrees) {
+    const uint64_t edge[] = {0, 1, 2, 0xFFFFFFFFull, 0x100000000ull, 0x8000000000000000ull, ~0ull, ~0ull - 1,
+                             0x9E3779B97F4A7C15ull};
+    for (uint64_t a : edge)
+        for (uint64_t b : edge) EXPECT_EQ(replay::mul_high64(a, b), replay::below(a, b)) << a << " * " << b;
+    EXPECT_EQ(replay::mul_high64(~0ull, ~0ull), ~0ull - 1);
+    for (uint64_t i = 0; i < 100000; ++i) {
+        const uint64_t a = replay::mix64(2 * i), b = replay::mix64(2 * i + 1) >> (i % 64);
+        ASSERT_EQ(replay::mul_high64(a, b), replay::below(a, b)) << a << " * " << b;
+    }
+}
+
 TEST(ReplayGenerator, SpecTestVectors) {
     EXPECT_EQ(replay::mix64(0), 0xe220a8397b1dcdafull);
     EXPECT_EQ(replay::mix64(1), 0x910a2dec89025cc1ull);

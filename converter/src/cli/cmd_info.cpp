@@ -13,16 +13,6 @@ namespace spt::cli {
 
 namespace {
 
-const char* kind_name(TemplateKind k) {
-    switch (k) {
-        case TemplateKind::Bitmap: return "bitmap";
-        case TemplateKind::Ellipse: return "ellipse";
-        case TemplateKind::Rectangle: return "rectangle";
-        case TemplateKind::Triangle: return "triangle";
-    }
-    return "unknown";
-}
-
 double degrees(const Orientation& o) {
     return std::atan2(double(o.sin_q14), double(o.cos_q14)) * 180.0 / 3.14159265358979323846;
 }
@@ -150,7 +140,7 @@ int cmd_info(int argc, char** argv) {
             j.obj().kv("cos_q14", int(o.cos_q14)).kv("sin_q14", int(o.sin_q14)).kv("degrees", degrees(o)).end();
         j.end().key("templates").arr();
         for (const auto& t : info.templates)
-            j.obj().kv("kind", kind_name(t.kind)).kv("name", t.name).kv("width", uint32_t(t.width))
+            j.obj().kv("kind", template_kind_name(t.kind)).kv("name", t.name).kv("width", uint32_t(t.width))
                 .kv("height", uint32_t(t.height)).end();
         j.end().key("metadata").obj();
         std::map<std::string, std::string> meta(info.metadata.begin(), info.metadata.end());
@@ -185,7 +175,7 @@ int cmd_info(int argc, char** argv) {
             for (size_t i = 0; i < frames.size(); ++i) {
                 const auto& f = frames[i];
                 j.obj().kv("index", f.index).kv("type", f.type == FrameType::Key ? "key" : "inter")
-                    .kv("coding", f.coding == Coding::Range ? "range" : "stored").kv("offset", f.offset)
+                    .kv("coding", coding_name(f.coding)).kv("offset", f.offset)
                     .kv("bytes", f.chunk_bytes).kv("stroke_bytes", f.stroke_bytes).kv("motion_bytes", f.motion_bytes)
                     .kv("added", f.added).kv("removed", f.removed).kv("live", live[i]).end();
             }
@@ -211,7 +201,7 @@ int cmd_info(int argc, char** argv) {
     for (const auto& o : h.orientations) std::printf(" %.1f", degrees(o));
     std::printf(" deg\ntemplates   %zu:", info.templates.size());
     for (const auto& t : info.templates) {
-        std::printf(" %s", kind_name(t.kind));
+        std::printf(" %s", template_kind_name(t.kind));
         if (t.kind == TemplateKind::Bitmap) std::printf(" %ux%u", t.width, t.height);
         if (!t.name.empty()) std::printf(" \"%s\"", t.name.c_str());
         std::printf(";");
@@ -258,7 +248,7 @@ int cmd_info(int argc, char** argv) {
         for (size_t i = 0; i < frames.size(); ++i) {
             const auto& f = frames[i];
             std::printf("%7u %5s %6s %12llu %9llu %9llu %8u %8u %8llu\n", f.index,
-                        f.type == FrameType::Key ? "key" : "inter", f.coding == Coding::Range ? "range" : "stored",
+                        f.type == FrameType::Key ? "key" : "inter", coding_name(f.coding),
                         (unsigned long long)f.offset, (unsigned long long)f.chunk_bytes,
                         (unsigned long long)f.stroke_bytes, f.added, f.removed, (unsigned long long)live[i]);
         }

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "spt/coding.hpp"
 #include "spt/limits.hpp"
 #include "spt/render.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
-#include "spt/writer.hpp"
 
 namespace spt {
 

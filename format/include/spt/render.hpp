@@ -59,21 +59,11 @@ public:
     // the spec defines it, clipped to nothing: callers clip.
     virtual Status stroke_mask(const Stroke& s, Mask& out) const = 0;
     // The footprint of a stamp stroke centred on pixel (0, 0): x0, y0 are offsets from the
-    // centre pixel. Cached; the reference stays valid for the Renderer's lifetime. Built only
-    // when asked for (drawing uses its own compact form, below); always built, whatever its
-    // size (at most the evaluation box of a 4096 x 4096 set, about 34 MB), and counted in
-    // footprint_cache_bytes().
+    // centre pixel. The Mask lives as long as the Renderer.
     virtual const Mask& stamp_footprint(uint8_t set, uint8_t tmpl, uint8_t orient) const = 0;
 
-    // Memory budget of the footprints draw() and render() cache (one per set, template and
-    // orientation used, stored as per-row spans of non-zero coverage, 3 bytes a pixel). A
-    // footprint whose evaluation box could need more than kMaxFootprintBytes, or that would
-    // take the cache past kFootprintCacheBytes, is not stored: such stamps are evaluated per
-    // stroke through their inverse map (same pixels, slower). A 4096 x 4096 set at 45 degrees
-    // (about 100 MB) is drawn that way; sets up to about 1400 x 1400 are cached.
-    static constexpr size_t kFootprintCacheBytes = size_t(256) << 20;
-    static constexpr size_t kMaxFootprintBytes = size_t(16) << 20;
-    // Bytes the footprint caches hold now (both forms).
+    // Bytes the Renderer holds for stamp footprints now (it keeps them between calls, within a
+    // fixed budget; stamps over the budget are drawn without one, to the same pixels).
     virtual size_t footprint_cache_bytes() const = 0;
     // The pixel on whose centre a stamp with Q4 position (x, y) is rendered: the one holding it.
     static int32_t stamp_pixel(int32_t q4) { return q4 >> 4; }  // pixel containing q4

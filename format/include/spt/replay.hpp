@@ -31,8 +31,26 @@ constexpr uint64_t draw(uint64_t seed, uint32_t set, uint64_t counter, Stream st
     return mix64(h ^ counter);
 }
 
-// A uniform integer in [0, n): the high 64 bits of the 128-bit product r * n.
-inline uint64_t below(uint64_t r, uint64_t n) { return uint64_t((__uint128_t(r) * n) >> 64); }
+// The high 64 bits of the 128-bit product a * b in 64-bit arithmetic: four 32 x 32-bit
+// products and their carries.
+constexpr uint64_t mul_high64(uint64_t a, uint64_t b) {
+    const uint64_t al = a & 0xFFFFFFFFu, ah = a >> 32, bl = b & 0xFFFFFFFFu, bh = b >> 32;
+    const uint64_t ll = al * bl, lh = al * bh, hl = ah * bl;
+    const uint64_t mid = (ll >> 32) + (lh & 0xFFFFFFFFu) + (hl & 0xFFFFFFFFu);
+    return ah * bh + (lh >> 32) + (hl >> 32) + (mid >> 32);
+}
+
+// A uniform integer in [0, n): the high 64 bits of the 128-bit product r * n. Compilers with a
+// 128-bit integer make that one multiply instruction (the painter draws it for every candidate);
+// the others get mul_high64, the same value.
+inline uint64_t below(uint64_t r, uint64_t n) {
+#if defined(__SIZEOF_INT128__)
+    __extension__ typedef unsigned __int128 U128;
+    return uint64_t((U128(r) * n) >> 64);
+#else
+    return mul_high64(r, n);
+#endif
+}
 
 // The pixels a candidate of one stroke set may land on, in raster order (SPEC.md 7.7.2): the
 // canvas, intersected with the union of `rects` when present and with a block mask when
@@ -40,7 +58,12 @@ inline uint64_t below(uint64_t r, uint64_t n) { return uint64_t((__uint128_t(r) 
 // rows, never with the pixel count.
 class CandidateDomain {
 public:
-    CandidateDomain() = default;
+    CandidateDomain();
+    ~CandidateDomain();
+    CandidateDomain(const CandidateDomain&);
+    CandidateDomain(CandidateDomain&&) noexcept;
+    CandidateDomain& operator=(const CandidateDomain&);
+    CandidateDomain& operator=(CandidateDomain&&) noexcept;
     // `region` must be valid for the canvas (check_region).
     CandidateDomain(uint32_t width, uint32_t height, const ReplayRegion& region);
     uint64_t size() const { return total_; }
@@ -49,13 +72,7 @@ public:
     bool contains(uint32_t x, uint32_t y) const;
 
 private:
-    struct Band {
-        uint32_t y0 = 0, y1 = 0;             // rows [y0, y1)
-        uint64_t start = 0;                  // allowed pixels before the band
-        uint64_t per_row = 0;                // allowed pixels in each of its rows
-        std::vector<uint32_t> x0, x1;        // sorted disjoint intervals [x0, x1)
-        std::vector<uint64_t> before;        // allowed pixels of a row before interval i
-    };
+    struct Band;  // rows sharing one list of allowed intervals (replay_generator.cpp)
     uint32_t width_ = 0, height_ = 0;
     bool all_ = true;
     uint64_t total_ = 0;

@@ -44,6 +44,8 @@ enum class TemplateKind : uint8_t {
     Rectangle = 2,  // unit square |u| <= 1, |v| <= 1
     Triangle = 3,   // u >= -1, v >= -1, u + v <= 0: vertices (-1,-1), (1,-1), (-1,1)
 };
+// "bitmap", "ellipse", "rectangle", "triangle"; "unknown" for any other value.
+const char* template_kind_name(TemplateKind k);
 
 struct Template {
     TemplateKind kind = TemplateKind::Bitmap;
