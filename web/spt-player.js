@@ -181,7 +181,8 @@ export class SptPlayer extends HTMLElement {
   _tick(now) {
     if (!this._playing) return;
     const n = this.frameCount;
-    let target = Math.floor(((now - this._t0) * this.fps * this._speed) / 1000);
+    // now (the frame's start) can be a little before the clock was started in play().
+    let target = Math.max(0, Math.floor(((now - this._t0) * this.fps * this._speed) / 1000));
     if (target >= n) {
       if (this.loop) {
         target %= n;

@@ -100,6 +100,28 @@ try {
     });
     assert.deepEqual(info, { frameCount: 8, fps: 25, w: 720, h: 405 }, `${clip}: the player's clip info`);
     await checkFrames(page, w(clip));
+    // play() from frame 0 runs to the last frame at the file's fps and stops there (no loop).
+    const played = await page.evaluate(async () => {
+      const el = document.querySelector('spt-player');
+      el.loop = false;
+      await el.seek(0);
+      const shown = [];
+      el.addEventListener('frame', (e) => shown.push(e.detail.frame));
+      const t = performance.now();
+      const done = await new Promise((resolve) => {
+        el.addEventListener('complete', () => resolve(true), { once: true });
+        el.play();
+        setTimeout(() => resolve(false), 20000);
+      });
+      return { done, shown, ms: performance.now() - t, frame: el.frame, playing: el.playing, error: el.errorMessage };
+    });
+    assert.ok(played.done, `${clip}: playback did not complete: ${JSON.stringify(played)}`);
+    assert.equal(played.frame, 7, `${clip}: playback ends on the last frame`);
+    assert.equal(played.playing, false);
+    assert.ok(played.shown.length >= 2 && played.shown.every((f, i) => i === 0 || f > played.shown[i - 1]),
+              `${clip}: frames shown in order: ${played.shown}`);
+    assert.ok(played.ms >= 7 * 40 - 20, `${clip}: 8 frames at 25 fps took ${played.ms} ms`);
+    console.log(`ok: ${clip} played frames ${played.shown.join(' ')} in ${played.ms.toFixed(0)} ms`);
     assert.deepEqual(errors, [], `${clip}: errors on the page`);
     await page.close();
   }
