@@ -13,6 +13,7 @@ core_pkgs=(build-essential cmake ninja-build pkg-config git python3
 test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy
            blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils
            mmdebstrap time              # Blender 4.3 and 5.2 roots (tests/blender/blender_root.sh)
+           emscripten node-acorn nodejs   # the web player (web/) and its Chromium test
            libjxl-tools webp optipng)   # the last three: bench/ comparisons only
 
 install_pkgs() {
@@ -28,8 +29,8 @@ install_pkgs() {
 }
 
 build() {
-  local tests="$1"
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSPT_BUILD_TESTS="$tests" >/dev/null
+  local tests="$1"; shift
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSPT_BUILD_TESTS="$tests" "$@" >/dev/null
   cmake --build "$build" --parallel "$(nproc)"
 }
 
@@ -45,7 +46,11 @@ case "$mode" in
     ;;
   test)
     install_pkgs "${core_pkgs[@]}" "${test_pkgs[@]}"
-    build ON
+    # playwright-core drives Chromium in tests/web (versions pinned by its package-lock.json).
+    # npm comes with nodejs from NodeSource; Debian's own nodejs needs the npm package.
+    command -v npm >/dev/null || install_pkgs npm
+    (cd tests/web && npm ci --no-audit --no-fund --loglevel=error)
+    build ON -DSPT_BUILD_WEB=ON   # the tests include the WebAssembly player's
     ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 900
     ;;
   *)

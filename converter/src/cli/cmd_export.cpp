@@ -4,6 +4,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/export_web.hpp"
 #include "io/sequence.hpp"
 #include "io/spt_file.hpp"
 #include "spt_import/export.hpp"
@@ -25,12 +26,14 @@ int fail(const std::string& msg) {
 }  // namespace
 
 int cmd_export(int argc, char** argv) {
-    Args args("export", "write a .spt file as SVG (one per frame) or as a JSON stroke list",
-              "spt export IN.spt -o OUT.json | -o OUT.svg | -o OUT.####.svg [--frames RANGE]");
+    Args args("export", "write a .spt file as SVG (one per frame), a JSON stroke list, or a web page that plays it",
+              "spt export IN.spt -o OUT.json | -o OUT.svg | -o OUT.####.svg [--frames RANGE] | -o OUT.html | -o DIR/ --web");
     args.positional("IN.spt", "the .spt file to export")
         .option("output", "OUT", "OUT.json: the JSON stroke list (importers/README.md), every frame as stored; "
                                  "OUT.svg: one SVG per frame, with #### (or %04d) in the name for several frames", 'o')
         .option("frames", "RANGE", "SVG only: the frames to export (\"0-10,20\"; 0-based)")
+        .flag("web", "write DIR/ for a web server: the player (web/README.md), its WebAssembly module, the clip and "
+                     "index.html (OUT.html instead: one self-contained page that plays offline)")
         .epilog("The JSON output imports back (spt import) into the same .spt file. In the SVG, each stamp or\n"
                 "affine stroke is its template (ellipse/rect/polygon, or a bitmap as a PNG mask) placed with\n"
                 "transform=\"matrix(...)\"; curves are round-capped outlines; polygon strokes are <polygon>s\n"
@@ -39,8 +42,12 @@ int cmd_export(int argc, char** argv) {
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     const std::string in = args.pos("IN.spt"), out = args.get("output");
     if (out.empty()) return args.usage_error("missing -o OUT.json or -o OUT.svg");
+    if (is_web_export(out, args.has("web"))) {
+        if (args.has("frames")) return args.usage_error("--frames applies to SVG output only (the player holds every frame)");
+        return export_web(in, out, args.has("web"));
+    }
     const bool json = ends_with(out, ".json"), svg = ends_with(out, ".svg");
-    if (!json && !svg) return args.usage_error("the output must end in .json or .svg: " + out);
+    if (!json && !svg) return args.usage_error("the output must end in .json, .svg or .html (or give --web and a folder): " + out);
     if (json && args.has("frames")) return args.usage_error("--frames applies to SVG output only (JSON holds every frame as stored)");
     io::FrameRange range;
     if (args.has("frames")) {

@@ -1,0 +1,132 @@
+// spt export -o page.html / -o folder/ --web (see export_web.hpp). The player's files are
+// compiled into spt (web/src/web_assets.hpp): the page is made from the very player and libspt
+// build that this spt carries, with nothing to locate at run time.
+#include "cli/export_web.hpp"
+
+#include <OpenImageIO/strutil.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string_view>
+#include <system_error>
+
+#include "io/spt_file.hpp"
+#include "spt_import/export.hpp"
+#include "web_assets.hpp"
+
+namespace spt::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int fail(const std::string& msg) {
+    std::fprintf(stderr, "spt export: %s\n", msg.c_str());
+    return 1;
+}
+
+bool ends_with_ci(std::string s, std::string_view suffix) {
+    for (auto& c : s) c = char(std::tolower((unsigned char)c));
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string_view asset(std::string_view name) {
+    for (const auto& a : web::player_assets())
+        if (a.name == name) return a.bytes;
+    return {};
+}
+
+std::string html_escape(std::string_view s) {
+    std::string o;
+    for (char c : s) {
+        if (c == '&') o += "&amp;";
+        else if (c == '<') o += "&lt;";
+        else if (c == '>') o += "&gt;";
+        else if (c == '"') o += "&quot;";
+        else o += c;
+    }
+    return o;
+}
+
+// JavaScript inside <script>: a "</script" in it would end the element early.
+std::string script_safe(std::string_view js) {
+    std::string o(js);
+    for (size_t p = 0; (p = o.find("</script", p)) != std::string::npos; p += 2) o.replace(p, 2, "<\\/");
+    return o;
+}
+
+const char* kPageStyle =
+    "html,body{margin:0;height:100%;background:#111}"
+    "body{display:flex;align-items:center;justify-content:center}";
+
+std::string page_head(const std::string& title) {
+    return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
+           html_escape(title) + "</title>\n<style>" + kPageStyle + "</style>\n";
+}
+
+// One page: the clip and the module as base64 text in inert <script> elements, and the two ES
+// modules joined into one inline module (the player's import of spt-core.js dropped).
+std::string self_contained_page(const std::string& title, const std::string& clip) {
+    std::string player(asset("spt-player.js"));
+    const std::string import_line = "import { loadSptCore, SptError } from './spt-core.js';\n";
+    if (size_t p = player.find(import_line); p != std::string::npos) player.erase(p, import_line.size());
+    std::string page = page_head(title) + "</head>\n<body>\n<spt-player src=\"#spt-clip\" autoplay loop></spt-player>\n";
+    page += "<script type=\"application/octet-stream\" id=\"spt-clip\">" + OIIO::Strutil::base64_encode(clip) + "</script>\n";
+    page += "<script type=\"application/octet-stream\" id=\"spt-player-wasm\">" +
+            OIIO::Strutil::base64_encode(asset("spt_core.wasm")) + "</script>\n";
+    page += "<script type=\"module\">\n" + script_safe(asset("spt-core.js")) + "\n" + script_safe(player) + "</script>\n";
+    return page + "</body>\n</html>\n";
+}
+
+std::string hosted_page(const std::string& title, const std::string& clip_name) {
+    return page_head(title) + "<script type=\"module\" src=\"spt-player.js\"></script>\n</head>\n<body>\n"
+           "<spt-player src=\"" + html_escape(clip_name) + "\" autoplay loop></spt-player>\n</body>\n</html>\n";
+}
+
+}  // namespace
+
+bool is_web_export(const std::string& out, bool web_flag) {
+    return web_flag || ends_with_ci(out, ".html") || ends_with_ci(out, ".htm");
+}
+
+int export_web(const std::string& in, const std::string& out, bool folder) {
+    if (web::player_assets().empty())
+        return fail("this spt was built without the web player (configure with -DSPT_BUILD_WEB=ON; needs emcc, "
+                    "Debian package emscripten)");
+    auto reader = io::open_spt(in);
+    if (!reader) return fail(reader.error().message);
+    Reader& r = **reader;
+    for (size_t i = 0; i < r.frames().size(); ++i)
+        if (auto live = r.strokes_at(i); !live) return fail(io::frame_error(r, i, in, live.error()));
+    if (r.frames().empty()) return fail(in + ": the file holds no complete frame");
+
+    std::string clip;
+    {
+        std::ifstream f(in, std::ios::binary);
+        clip.assign(std::istreambuf_iterator<char>(f), {});
+        if (!f && !f.eof()) return fail(in + ": cannot read the file");
+    }
+    const std::string title = fs::path(in).stem().string();
+    if (!folder) {
+        if (Status s = import::write_file_atomic(out, self_contained_page(title, clip)); !s) return fail(s.error().message);
+        return 0;
+    }
+
+    std::error_code ec;
+    if (fs::exists(out, ec) && !fs::is_directory(out, ec)) return fail(out + ": exists and is not a folder (--web writes a folder)");
+    fs::create_directories(out, ec);
+    if (ec) return fail(out + ": cannot create the folder: " + ec.message());
+    const std::string clip_name = fs::path(in).filename().string();
+    for (const auto& a : web::player_assets())
+        if (Status s = import::write_file_atomic((fs::path(out) / a.name).string(), std::string(a.bytes)); !s)
+            return fail(s.error().message);
+    if (Status s = import::write_file_atomic((fs::path(out) / clip_name).string(), clip); !s) return fail(s.error().message);
+    if (Status s = import::write_file_atomic((fs::path(out) / "index.html").string(), hosted_page(title, clip_name)); !s)
+        return fail(s.error().message);
+    return 0;
+}
+
+}  // namespace spt::cli

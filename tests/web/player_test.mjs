@@ -1,0 +1,185 @@
+// The exported page in headless Chromium draws every frame identically to `spt render`, and a
+// damaged clip shows an error and rejects seek() with libspt's message.
+//   node player_test.mjs SPT_TOOL MEDIA_DIR WORK_DIR
+// Exit 0 when every check passes; any failure (or anything missing) exits 1 naming it.
+import assert from 'node:assert/strict';
+import { execFileSync, spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { launch, openPlayer } from './chromium.mjs';
+
+const [spt, media, work] = process.argv.slice(2);
+if (!spt || !media || !work) {
+  console.error('usage: node player_test.mjs SPT_TOOL MEDIA_DIR WORK_DIR');
+  process.exit(2);
+}
+fs.rmSync(work, { recursive: true, force: true });
+fs.mkdirSync(work, { recursive: true });
+const w = (name) => path.join(work, name);
+const run = (...args) => execFileSync(spt, args, { stdio: ['ignore', 'pipe', 'pipe'] }).toString();
+
+// A painted clip with two key frames (0 and 4) and inter frames after each.
+const video = path.join(media, 'video', 'city.mpg');
+if (!fs.existsSync(video)) throw new Error(`media missing: ${video}`);
+run('paint', video, '-o', w('clip.spt'), '--frames', '0-7', '--keyframe-interval', '4', '--max-strokes', '3000',
+    '--seed', '1', '--progress', 'none');
+run('pack', w('clip.spt'), '-o', w('stored.spt'), '--stored');
+
+// Frames in seek order: forwards over inter frames, back across a key frame, and single steps.
+const FRAMES = [0, 2, 3, 5, 7, 1, 4, 6];
+
+function ppm(file) {
+  const b = fs.readFileSync(file);
+  let pos = 0;
+  for (let lines = 0; lines < 3;) if (b[pos++] === 10) ++lines;
+  return b.subarray(pos);
+}
+
+// Frame n from the page's canvas (RGBA) against spt render's (RGB): every byte, alpha 255.
+async function checkFrames(page, clip) {
+  for (const n of FRAMES) run('render', clip, '-o', w(`ref.${n}.ppm`), '--frames', String(n));
+  for (const n of FRAMES) {
+    const b64 = await page.evaluate(async (n) => {
+      const el = document.querySelector('spt-player');
+      el.pause();
+      await el.seek(n);
+      const c = el.canvas;
+      const px = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let s = '';
+      for (let i = 0; i < px.length; i += 0x8000) s += String.fromCharCode.apply(null, px.subarray(i, i + 0x8000));
+      return btoa(s);
+    }, n);
+    const got = Buffer.from(b64, 'base64');
+    const want = ppm(w(`ref.${n}.ppm`));
+    assert.equal(got.length / 4, want.length / 3, `frame ${n}: canvas size`);
+    let bad = 0, first = -1;
+    for (let i = 0, j = 0; j < want.length; i += 4, j += 3) {
+      if (got[i] !== want[j] || got[i + 1] !== want[j + 1] || got[i + 2] !== want[j + 2] || got[i + 3] !== 255) {
+        if (first < 0) first = j / 3;
+        ++bad;
+      }
+    }
+    assert.equal(bad, 0, `${path.basename(clip)} frame ${n}: ${bad} pixels differ from spt render (first at pixel ${first})`);
+    console.log(`ok: ${path.basename(clip)} frame ${n} identical to spt render`);
+  }
+}
+
+// libspt's message for `file`, as the native tool prints it.
+function nativeError(file, frame) {
+  const r = spawnSync(spt, ['render', file, '-o', w('x.ppm'), '--frames', String(frame)]);
+  assert.notEqual(r.status, 0, `spt render of the damaged ${file} should fail`);
+  return r.stderr.toString();
+}
+
+// The file with its HEAD chunk's major version set to `major`, the chunk's CRC made right
+// again (CRC-32 of type and payload, SPEC.md), so that the version is what the reader meets.
+function withMajorVersion(file, major) {
+  const b = Buffer.from(file);
+  const length = b.readUInt32LE(8);
+  assert.equal(b.toString('latin1', 12, 16), 'HEAD');
+  b.writeUInt16LE(major, 16);
+  let c = 0xffffffff;
+  for (const x of b.subarray(12, 16 + length)) {
+    c ^= x;
+    for (let k = 0; k < 8; ++k) c = (c >>> 1) ^ (0xedb88320 & -(c & 1));
+  }
+  b.writeUInt32LE((c ^ 0xffffffff) >>> 0, 16 + length);
+  return b;
+}
+
+const { context, close } = await launch();
+try {
+  for (const clip of ['clip.spt', 'stored.spt']) {
+    const html = w(clip.replace('.spt', '.html'));
+    run('export', w(clip), '-o', html);
+    const { page, errors } = await openPlayer(context, html);
+    const info = await page.evaluate(async () => {
+      const el = document.querySelector('spt-player');
+      await el.ready;
+      return { frameCount: el.frameCount, fps: el.fps, w: el.canvas.width, h: el.canvas.height };
+    });
+    assert.deepEqual(info, { frameCount: 8, fps: 25, w: 720, h: 405 }, `${clip}: the player's clip info`);
+    await checkFrames(page, w(clip));
+    // play() from frame 0 runs to the last frame at the file's fps and stops there (no loop).
+    const played = await page.evaluate(async () => {
+      const el = document.querySelector('spt-player');
+      el.loop = false;
+      await el.seek(0);
+      const shown = [];
+      el.addEventListener('frame', (e) => shown.push(e.detail.frame));
+      const t = performance.now();
+      const done = await new Promise((resolve) => {
+        el.addEventListener('complete', () => resolve(true), { once: true });
+        el.play();
+        setTimeout(() => resolve(false), 20000);
+      });
+      return { done, shown, ms: performance.now() - t, frame: el.frame, playing: el.playing, error: el.errorMessage };
+    });
+    assert.ok(played.done, `${clip}: playback did not complete: ${JSON.stringify(played)}`);
+    assert.equal(played.frame, 7, `${clip}: playback ends on the last frame`);
+    assert.equal(played.playing, false);
+    assert.ok(played.shown.length >= 2 && played.shown.every((f, i) => i === 0 || f > played.shown[i - 1]),
+              `${clip}: frames shown in order: ${played.shown}`);
+    assert.ok(played.ms >= 7 * 40 - 20, `${clip}: 8 frames at 25 fps took ${played.ms} ms`);
+    console.log(`ok: ${clip} played frames ${played.shown.join(' ')} in ${played.ms.toFixed(0)} ms`);
+    assert.deepEqual(errors, [], `${clip}: errors on the page`);
+    await page.close();
+  }
+
+  // A damaged inter frame (a byte of frame 2's payload flipped): spt export refuses the file;
+  // a page holding it plays up to that frame, then shows libspt's message and rejects.
+  const bytes = fs.readFileSync(w('clip.spt'));
+  const frams = [];
+  for (let i = bytes.indexOf('FRAM'); i >= 0; i = bytes.indexOf('FRAM', i + 4)) frams.push(i);
+  assert.ok(frams.length >= 8, `clip.spt: ${frams.length} FRAM chunks found`);
+  const damaged = Buffer.from(bytes);
+  damaged[frams[2] + 40] ^= 0x55;
+  fs.writeFileSync(w('damaged.spt'), damaged);
+  const refused = spawnSync(spt, ['export', w('damaged.spt'), '-o', w('damaged.html')]);
+  assert.equal(refused.status, 1, `spt export of a damaged file exits 1: ${refused.stderr}`);
+  assert.ok(!fs.existsSync(w('damaged.html')), 'no page written for a damaged file');
+  const native = nativeError(w('damaged.spt'), 2);
+  const good = fs.readFileSync(w('clip.html'), 'utf8');
+  fs.writeFileSync(w('damaged.html'), good.replace(bytes.toString('base64'), damaged.toString('base64'))
+    .replace(' autoplay loop>', '>'));
+  {
+    const { page } = await openPlayer(context, w('damaged.html'));
+    const r = await page.evaluate(async () => {
+      const el = document.querySelector('spt-player');
+      await el.ready;
+      await el.seek(1);
+      try {
+        await el.seek(2);
+        return { resolved: true };
+      } catch (e) {
+        const box = el.shadowRoot.querySelector('.error');
+        return { message: e.message, code: e.code, shown: !box.hidden && box.textContent, errorMessage: el.errorMessage };
+      }
+    });
+    assert.ok(!r.resolved, 'seek(2) of the damaged clip resolved');
+    assert.ok(r.message.length > 0 && native.includes(r.message),
+              `the rejection "${r.message}" is libspt's message as spt render gives it: ${native}`);
+    assert.equal(r.shown, r.message, 'the element shows the message');
+    assert.equal(r.errorMessage, r.message);
+    console.log(`ok: damaged frame 2 rejected with libspt's message: ${r.message} (${r.code})`);
+
+    // Not a .spt file at all, and an unsupported version: load() rejects, the element shows it.
+    for (const [name, data] of [['not-spt', Buffer.from('this is not a painting, just text\n'.repeat(4))],
+                                ['version-9', withMajorVersion(bytes, 9)]]) {
+      fs.writeFileSync(w(name + '.spt'), data);
+      const want = spawnSync(spt, ['info', w(name + '.spt')]).stderr.toString();
+      const m = await page.evaluate(async (b64) => {
+        const el = document.querySelector('spt-player');
+        try { await el.load(Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))); return null; } catch (e) { return [e.message, el.errorMessage]; }
+      }, data.toString('base64'));
+      assert.ok(m, `${name}: load() resolved`);
+      assert.ok(want.includes(m[0]), `${name}: the rejection "${m[0]}" is libspt's message: ${want}`);
+      assert.equal(m[1], m[0], `${name}: the element shows the message`);
+      console.log(`ok: ${name} rejected with libspt's message: ${m[0]}`);
+    }
+    await page.close();
+  }
+} finally {
+  await close();
+}
+console.log('web player: all checks passed');
