@@ -8,6 +8,7 @@
 #include "frame_coding.hpp"
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
+#include "spt/utf8.hpp"
 #include "spt/writer.hpp"
 #include "validate.hpp"
 
@@ -33,6 +34,27 @@ const char* field_name(Field f) {
 Writer::~Writer() = default;
 
 namespace {
+
+// SPEC.md 3.2-3.3: metadata keys and values and template names are UTF-8; a file never gets
+// text that its readers (or a JSON export) cannot carry.
+Status check_text(const StreamInfo& info, const std::string& path) {
+    size_t at = 0;
+    for (const auto& [k, v] : info.metadata) {
+        if (!is_valid_utf8(k, &at))
+            return make_error(Code::InvalidArgument, path + ": metadata key \"" + printable_text(k) +
+                                                         "\" is not valid UTF-8 (byte " + std::to_string(at) + ")");
+        if (!is_valid_utf8(v, &at))
+            return make_error(Code::InvalidArgument, path + ": metadata key \"" + k + "\": the value is not valid UTF-8 (byte " +
+                                                         std::to_string(at) + ")");
+    }
+    for (size_t i = 0; i < info.templates.size(); ++i)
+        if (!is_valid_utf8(info.templates[i].name, &at))
+            return make_error(Code::InvalidArgument, path + ": template " + std::to_string(i) + ": the name \"" +
+                                                         printable_text(info.templates[i].name) + "\" is not valid UTF-8");
+    return {};
+}
+
+using detail::ByteSink;
 
 using detail::ByteSink;
 
@@ -246,6 +268,7 @@ Result<std::unique_ptr<Writer>> Writer::create(const std::string& path, const St
     for (size_t i = 0; i < info.templates.size(); ++i)
         if (auto st = detail::check_template(info.templates[i], lim, Code::InvalidArgument, path + ": template " + std::to_string(i), 0); !st)
             return st.error();
+    if (auto st = check_text(info, path); !st) return st.error();
     if (opts.coding != Coding::Stored && opts.coding != Coding::Range && opts.coding != Coding::Replay)
         return make_error(Code::InvalidArgument, path + ": unknown frame coding");
     const std::string out_path = opts.atomic_rename ? path + ".partial" : path;

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "spt/utf8.hpp"
 #include "spt_import/importer.hpp"
 
 using namespace spt;
@@ -16,6 +17,9 @@ Result<Document> load(const char* importer, const std::string& text) {
     EXPECT_NE(imp, nullptr) << importer;
     return imp->load("in", text, ImportOptions{});
 }
+
+const char* kJsonHead =
+    R"({"format": "spt-strokes", "version": 1, "canvas": {"width": 8, "height": 8}, )";
 
 }  // namespace
 
@@ -51,4 +55,31 @@ TEST(HostileImport, GeometrizeBackgroundLeftOfTheOriginIsRefused) {
 TEST(HostileImport, SequencePatternWithAHugeWidthMatchesNothing) {
     auto r = expand_inputs("/nonexistent-spt-dir/frame_%09999999999999d.json");
     ASSERT_FALSE(r.ok());
+}
+
+// SPEC.md 3.3: metadata is UTF-8. It was accepted as bytes, and `spt export` then wrote invalid JSON.
+TEST(HostileImport, JsonMetadataValueOfInvalidUtf8IsRefusedNamingTheKey) {
+    auto r = load("spt-json", std::string(kJsonHead) + "\"metadata\": {\"title\": \"caf\xE9\"}, \"frames\": [{\"type\": \"key\", \"strokes\": []}]}");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("metadata key \"title\""), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find("not valid UTF-8"), std::string::npos) << r.error().message;
+}
+
+TEST(HostileImport, JsonMetadataKeyOfInvalidUtf8IsRefused) {
+    auto r = load("spt-json", std::string(kJsonHead) + "\"metadata\": {\"ti\xC0\xAFtle\": \"x\"}, \"frames\": [{\"type\": \"key\", \"strokes\": []}]}");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("metadata key \"ti\\xc0\\xaftle\" is not valid UTF-8"), std::string::npos) << r.error().message;
+}
+
+TEST(HostileImport, JsonTemplateNameOfInvalidUtf8IsRefused) {
+    auto r = load("spt-json", std::string(kJsonHead) +
+                                  "\"templates\": [{\"kind\": \"ellipse\", \"name\": \"\xED\xA0\x80\"}], \"frames\": [{\"type\": \"key\", \"strokes\": []}]}");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("not valid UTF-8"), std::string::npos) << r.error().message;
+}
+
+TEST(HostileImport, ValidUtf8MetadataStillImports) {
+    auto r = load("spt-json", std::string(kJsonHead) + "\"metadata\": {\"title\": \"caf\xC3\xA9 \xF0\x9F\x8E\xA8\"}, \"frames\": [{\"type\": \"key\", \"strokes\": []}]}");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_EQ(r->info.metadata.at(0).second, "caf\xC3\xA9 \xF0\x9F\x8E\xA8");
 }

@@ -17,6 +17,7 @@
 #include "paint/rate_control.hpp"
 #include "spt/render.hpp"
 #include "spt/version.hpp"
+#include "spt/utf8.hpp"
 #include "spt/writer.hpp"
 #include "video/video_paint.hpp"
 
@@ -83,9 +84,9 @@ Status write_side_by_side(const std::string& path, const io::Image& src, const C
 std::vector<std::pair<std::string, std::string>> still_metadata(const PaintCommandOptions& o) {
     return {
         {"software", std::string("spt ") + library_version()},
-        {"source", std::filesystem::path(o.input).filename().string()},
+        {"source", printable_text(std::filesystem::path(o.input).filename().string())},  // names need not be UTF-8
         {"painter.seed", std::to_string(o.paint.seed)},
-        {"painter.options", o.canonical()},
+        {"painter.options", printable_text(o.canonical())},
     };
 }
 

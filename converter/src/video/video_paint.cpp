@@ -10,6 +10,7 @@
 #include "video/frame_source.hpp"
 #include "io/roi_file.hpp"
 #include "video/video_encoder.hpp"
+#include "spt/utf8.hpp"
 
 namespace spt::video {
 
@@ -91,9 +92,9 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
 
     std::vector<std::pair<std::string, std::string>> meta = {
         {"software", "spt video painter"},
-        {"source", opts.input},
+        {"source", printable_text(opts.input)},  // names need not be UTF-8
         {"painter.seed", std::to_string(opts.paint.seed)},
-        {"painter.options", options_text(opts)},
+        {"painter.options", printable_text(options_text(opts))},
     };
     VideoPaintOptions eo = opts;
     if (opts.target_bytes > 0) {

@@ -6,5 +6,6 @@
 #include "spt/render.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
+#include "spt/utf8.hpp"
 #include "spt/version.hpp"
 #include "spt/writer.hpp"
