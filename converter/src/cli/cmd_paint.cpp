@@ -17,6 +17,7 @@
 #include "paint/rate_control.hpp"
 #include "spt/render.hpp"
 #include "spt/version.hpp"
+#include "spt/atomic_file.hpp"
 #include "spt/utf8.hpp"
 #include "spt/writer.hpp"
 #include "video/video_paint.hpp"
@@ -94,6 +95,13 @@ int paint_still(const PaintCommandOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     io::ReadOptions ro;
     ro.background = o.background;
+    // Every output is checked before the work: a folder, a missing folder or an unknown image
+    // extension fails now, not after the paint, and leaves nothing.
+    if (Status c = check_output_path(o.output); !c) return fail(c.error().message);
+    if (!o.preview.empty())
+        if (Status c = io::check_image_output(o.preview); !c) return fail("--preview " + c.error().message);
+    if (!o.side_by_side.empty())
+        if (Status c = io::check_image_output(o.side_by_side); !c) return fail("--side-by-side " + c.error().message);
     auto img = io::read_image(o.input, ro);
     if (!img) return fail(img.error().message);
     const uint32_t W = img->width, H = img->height;
@@ -189,7 +197,7 @@ int paint_still(const PaintCommandOptions& o) {
     if (!s) {
         (*writer)->abort();
         progress.finish(false, st.strokes, st.psnr, s.error().message);
-        return fail(o.output + ": " + s.error().message);
+        return fail(s.error().message);  // names the file
     }
     const uint64_t bytes = (*writer)->stats().total_bytes;
 

@@ -10,6 +10,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "io/image_io.hpp"
+#include "io/private_output.hpp"
 #include "io/progress.hpp"
 #include "io/sequence.hpp"
 #include "io/spt_file.hpp"
@@ -32,16 +33,21 @@ std::string lower_ext(const std::string& p) {
     return e;
 }
 
-// A preview video through OpenCV, written under a temporary name and renamed when complete.
+// A preview video through OpenCV, written inside a private folder (io/private_output.hpp) and
+// moved into place when complete.
 class VideoOut {
 public:
     bool open(const std::string& path, double fps, uint32_t w, uint32_t h, std::string& err) {
-        path_ = path;
         const std::string ext = lower_ext(path);
-        tmp_ = path + ".partial" + ext;  // OpenCV picks the container from the extension
+        auto p = io::PrivateOutput::create(path);
+        if (!p) {
+            err = p.error().message;
+            return false;
+        }
+        out_ = std::move(*p);  // OpenCV picks the container from the extension, kept by file()
         const int fourcc = ext == ".avi" ? cv::VideoWriter::fourcc('M', 'J', 'P', 'G')
                                          : cv::VideoWriter::fourcc('m', 'p', '4', 'v');
-        if (!writer_.open(tmp_, cv::CAP_FFMPEG, fourcc, fps > 0 ? fps : 24.0, cv::Size(int(w), int(h)))) {
+        if (!writer_.open(out_.file(), cv::CAP_FFMPEG, fourcc, fps > 0 ? fps : 24.0, cv::Size(int(w), int(h)))) {
             err = path + ": OpenCV cannot create a " + ext + " video here";
             discard();
             return false;
@@ -55,23 +61,19 @@ public:
     }
     bool finish(std::string& err) {
         writer_.release();
-        std::error_code ec;
-        fs::rename(tmp_, path_, ec);
-        if (ec) {
-            err = path_ + ": cannot rename the finished video into place: " + ec.message();
-            discard();
+        if (Status s = out_.commit(); !s) {
+            err = s.error().message;
             return false;
         }
         return true;
     }
     void discard() {
         writer_.release();
-        std::error_code ec;
-        fs::remove(tmp_, ec);
+        out_.discard();
     }
 private:
     cv::VideoWriter writer_;
-    std::string path_, tmp_;
+    io::PrivateOutput out_;
     cv::Mat bgr_;
 };
 
@@ -92,7 +94,7 @@ int cmd_render(int argc, char** argv) {
         .epilog("Frames are reached through the index: rendering frames 500-510 decodes from the "
                 "key frame at or before 500 only. PNG, TIFF and JPEG are written 8-bit sRGB; EXR "
                 "half float scene-linear (the inverse of the sRGB curve). Every file is written "
-                "under a temporary name and renamed when complete.");
+                "without a name until complete (a video: in a private folder) and then moved into place.");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     io::ProgressMode mode;
     if (!io::parse_progress_mode(args.get("progress"), mode))
