@@ -160,7 +160,15 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
 }
 
 int run_video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {
+    VideoPaintReport local;
+    if (!report) report = &local;
     Status st = video_paint(opts, progress, report);
+    if (!st && report->interrupted && st.error().code == Code::BadState) {
+        // Stopped by a signal after a finished frame: the output is valid (README: exit 3).
+        progress.finish(false, st.error().message);
+        std::fprintf(stderr, "spt paint: %s\n", st.error().message.c_str());
+        return kExitInterrupted;
+    }
     if (!st) {
         progress.finish(false, st.error().message);
         std::fprintf(stderr, "spt paint: %s\n", st.error().message.c_str());
