@@ -5,6 +5,8 @@
 #   bench/fuzz_all.sh [seconds] [build_dir] [target...]
 # Environment: RUNS=N stops a target after N executions (whichever comes first with SECONDS);
 # MERGE=1 merges the inputs that reached new coverage into the committed corpus (tests/...).
+# REPLAY=1 runs each committed corpus once through the instrumented target (no fuzzing; what
+# ./setup.sh test does): the exit status is 1 when any input fails.
 # Findings (crash-, leak-, timeout-, oom- reproducers) are left in BUILD/findings/.
 set -eu
 secs=${1:-60}
@@ -25,16 +27,28 @@ svg fuzz_importers/fuzz_importers_svg fuzz_importers/corpus/svg 65536 10
 container fuzz/fuzz_container fuzz/corpus/container 32768 10"
 
 mkdir -p "$build/findings"
-status=0
-printf '%-11s %12s %8s %8s %7s %9s\n' target execs cov ft corpus findings
+rm -f "$build/findings/.failed"
+[ "${REPLAY:-0}" = 1 ] || printf '%-11s %12s %8s %8s %7s %9s\n' target execs cov ft corpus findings
 echo "$table" | while read -r t bin corpus maxlen timeout; do
   if [ $# -gt 0 ]; then
     case " $* " in *" $t "*) ;; *) continue ;; esac
   fi
   cmake --build "$build" --target "$(basename "$bin")" -j2 >/dev/null
+  log="$build/findings/$t.log"
+  if [ "${REPLAY:-0}" = 1 ]; then
+    n=$(ls "$src/tests/$corpus" | wc -l)
+    if "$build/tests/$bin" -runs=0 -max_len="$maxlen" -timeout="$timeout" -rss_limit_mb=2048 \
+        -artifact_prefix="$build/findings/$t-" "$src/tests/$corpus" >"$log" 2>&1; then
+      printf '%-11s replayed %s inputs, 0 findings\n' "$t" "$n"
+    else
+      printf '%-11s replayed %s inputs: FAILED (%s)\n' "$t" "$n" "$log"
+      grep -E "ERROR|SUMMARY|runtime error" "$log" | head -5 | sed 's/^/    /'
+      touch "$build/findings/.failed"
+    fi
+    continue
+  fi
   work=$(mktemp -d)
   cp "$src/tests/$corpus/"* "$work/"
-  log="$build/findings/$t.log"
   before=$(ls "$build/findings" | grep -c "^$t-" || true)
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
     "$build/tests/$bin" -max_total_time="$secs" ${RUNS:+-runs=$RUNS} -max_len="$maxlen" -timeout="$timeout" \
@@ -54,3 +68,4 @@ echo "$table" | while read -r t bin corpus maxlen timeout; do
   fi
   rm -rf "$work"
 done
+[ ! -e "$build/findings/.failed" ]
