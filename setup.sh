@@ -52,6 +52,9 @@ case "$mode" in
     (cd tests/web && npm ci --no-audit --no-fund --loglevel=error)
     build ON -DSPT_BUILD_WEB=ON   # the tests include the WebAssembly player's
     ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 900
+    # The fuzz corpora once more, through the instrumented targets (ASan, UBSan fatal): ctest
+    # above replays them in the plain build, this one also sees memory errors and UB.
+    REPLAY=1 bench/fuzz_all.sh 0 "${build}-fuzz"
     ;;
   *)
     echo "usage: ./setup.sh demo|test" >&2; exit 2 ;;

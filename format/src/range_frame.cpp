@@ -42,7 +42,7 @@ Status decode_stroke_stream(const uint8_t* p, size_t n, uint32_t count, const De
                             std::vector<Stroke>& out) {
     out.clear();
     if (count > ctx.limits.max_strokes_per_frame)
-        return body_error(ctx, Code::LimitExceeded, std::to_string(count) + " strokes exceed the per-frame limit");
+        return body_error(ctx, Code::LimitExceeded, std::to_string(count) + " strokes exceed the stroke limit of " + std::to_string(ctx.limits.max_strokes_per_frame) + " per frame (max_strokes_per_frame)");
     if (count == 0) {
         if (n) return body_error(ctx, Code::Corrupt, "stroke stream of a frame without strokes is not empty");
         return {};

@@ -147,7 +147,7 @@ Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const Deco
     const uint32_t added = pre.added;
     if (added == 0) return c.error(Code::Corrupt, "a coding-2 frame without strokes (such frames use coding 1)");
     if (added > ctx.limits.max_strokes_per_frame)
-        return c.error(Code::LimitExceeded, std::to_string(added) + " strokes exceed the per-frame limit");
+        return c.error(Code::LimitExceeded, std::to_string(added) + " strokes exceed the stroke limit of " + std::to_string(ctx.limits.max_strokes_per_frame) + " per frame (max_strokes_per_frame)");
     uint64_t seed = 0;
     uint8_t flags = 0;
     SPT_TRY(c.u64(seed, "seed"));

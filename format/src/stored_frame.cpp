@@ -205,7 +205,7 @@ Status decode_stored_body(FrameType type, const uint8_t* p, size_t n, const Deco
     uint32_t added;
     SPT_TRY(c.u32(added, "added_count"));
     if (added > ctx.limits.max_strokes_per_frame)
-        return c.error(Code::LimitExceeded, std::to_string(added) + " strokes exceed the per-frame limit");
+        return c.error(Code::LimitExceeded, std::to_string(added) + " strokes exceed the stroke limit of " + std::to_string(ctx.limits.max_strokes_per_frame) + " per frame (max_strokes_per_frame)");
     if (uint64_t(added) * kMinStrokeBytes > c.left())
         return c.error(Code::Truncated, std::to_string(added) + " strokes cannot fit in " + std::to_string(c.left()) + " bytes");
     // The strokes of the Frame's previous contents are overwritten in place: destroying and

@@ -123,7 +123,7 @@ Status check_stroke(const Stroke& s, const StreamShape& sh, const Limits& lim, C
 Status check_frame(const Frame& f, const StreamShape& sh, const Limits& lim, uint64_t prev_live,
                    Code code, const std::string& where, uint64_t off, size_t checked) {
     if (f.added.size() > lim.max_strokes_per_frame)
-        return fail(Code::LimitExceeded, where, std::to_string(f.added.size()) + " strokes exceed the per-frame limit", off);
+        return fail(Code::LimitExceeded, where, std::to_string(f.added.size()) + " strokes exceed the stroke limit of " + std::to_string(lim.max_strokes_per_frame) + " per frame (max_strokes_per_frame)", off);
     if (f.type == FrameType::Key) {
         if (!f.removed.empty() || !f.motion.empty()) return fail(code, where, "key frame has removals or motion", off);
         if (f.added.size() > lim.max_live_strokes) return fail(Code::LimitExceeded, where, "live list exceeds the limit", off);

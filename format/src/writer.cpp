@@ -1,13 +1,15 @@
 // Streaming writer (SPEC.md 9.1): constant memory; keeps only the index entries and the live
-// list length. Writes "<path>.partial" and renames it into place in finish().
+// list length. Writes an AtomicFile (spt/atomic_file.hpp) linked into place in finish().
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 
 #include "container.hpp"
+#include "spt/atomic_file.hpp"
 #include "frame_coding.hpp"
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
+#include "spt/utf8.hpp"
 #include "spt/writer.hpp"
 #include "validate.hpp"
 
@@ -17,12 +19,31 @@ Writer::~Writer() = default;
 
 namespace {
 
+// SPEC.md 3.2-3.3: metadata keys and values and template names are UTF-8; a file never gets
+// text that its readers (or a JSON export) cannot carry.
+Status check_text(const StreamInfo& info, const std::string& path) {
+    size_t at = 0;
+    for (const auto& [k, v] : info.metadata) {
+        if (!is_valid_utf8(k, &at))
+            return make_error(Code::InvalidArgument, path + ": metadata key \"" + printable_text(k) +
+                                                         "\" is not valid UTF-8 (byte " + std::to_string(at) + ")");
+        if (!is_valid_utf8(v, &at))
+            return make_error(Code::InvalidArgument, path + ": metadata key \"" + k + "\": the value is not valid UTF-8 (byte " +
+                                                         std::to_string(at) + ")");
+    }
+    for (size_t i = 0; i < info.templates.size(); ++i)
+        if (!is_valid_utf8(info.templates[i].name, &at))
+            return make_error(Code::InvalidArgument, path + ": template " + std::to_string(i) + ": the name \"" +
+                                                         printable_text(info.templates[i].name) + "\" is not valid UTF-8");
+    return {};
+}
+
 using detail::ByteSink;
 
 class FileWriter final : public Writer {
 public:
-    FileWriter(std::string path, std::string out_path, const StreamInfo& info, const WriterOptions& opts)
-        : path_(std::move(path)), out_path_(std::move(out_path)), header_(info.header),
+    FileWriter(std::string path, const StreamInfo& info, const WriterOptions& opts)
+        : path_(std::move(path)), out_path_(path_), header_(info.header),
           shape_(detail::StreamShape::of(info.header, info.templates.size())), opts_(opts) {
         // Frame coding 2 is format 1.1 (SPEC.md 7.7).
         if (opts_.coding == Coding::Replay && header_.version_minor < 1) header_.version_minor = 1;
@@ -35,8 +56,15 @@ public:
             if (!r) return r.error();
             renderer_ = std::move(*r);
         }
-        file_ = std::fopen(out_path_.c_str(), "wb");
-        if (!file_) return make_error(Code::IoError, out_path_ + ": cannot create: " + std::strerror(errno));
+        if (opts_.atomic_rename) {
+            auto a = AtomicFile::create(path_);
+            if (!a) return a.error();
+            atomic_ = std::move(*a);
+            file_ = atomic_.stream();
+        } else {
+            file_ = std::fopen(out_path_.c_str(), "wb");
+            if (!file_) return make_error(Code::IoError, out_path_ + ": cannot create: " + std::strerror(errno));
+        }
         ByteSink s;
         for (uint8_t b : detail::kSignature) s.u8(b);
         Header h = header_;
@@ -134,21 +162,29 @@ public:
         detail::put_chunk(head, "HEAD", detail::encode_head(h));
         if (std::fseek(file_, 8, SEEK_SET) != 0 || std::fwrite(head.bytes().data(), 1, head.size(), file_) != head.size())
             return fail(make_error(Code::IoError, out_path_ + ": cannot update HEAD: " + std::strerror(errno)));
-        if (std::fflush(file_) != 0)
-            return fail(make_error(Code::IoError, out_path_ + ": cannot flush: " + std::strerror(errno)));
-        const int rc = std::fclose(file_);
-        file_ = nullptr;
-        if (rc != 0) return fail(make_error(Code::IoError, out_path_ + ": cannot close: " + std::strerror(errno)));
-        if (out_path_ != path_ && std::rename(out_path_.c_str(), path_.c_str()) != 0)
-            return fail(make_error(Code::IoError, path_ + ": cannot rename " + out_path_ + " into place: " + std::strerror(errno)));
+        if (opts_.atomic_rename) {
+            file_ = nullptr;
+            if (auto st = atomic_.commit(); !st) return fail(st.error());
+        } else {
+            if (std::fflush(file_) != 0)
+                return fail(make_error(Code::IoError, out_path_ + ": cannot flush: " + std::strerror(errno)));
+            const int rc = std::fclose(file_);
+            file_ = nullptr;
+            if (rc != 0) return fail(make_error(Code::IoError, out_path_ + ": cannot close: " + std::strerror(errno)));
+        }
         stats_.total_bytes = pos_;
         finished_ = true;
         return {};
     }
 
     void abort() override {
-        if (file_) { std::fclose(file_); file_ = nullptr; }
-        if (!finished_ && !removed_) { std::remove(out_path_.c_str()); removed_ = true; }
+        if (opts_.atomic_rename) {
+            file_ = nullptr;
+            atomic_.discard();
+        } else {
+            if (file_) { std::fclose(file_); file_ = nullptr; }
+            if (!finished_ && !removed_) { std::remove(out_path_.c_str()); removed_ = true; }
+        }
         failed_ = true;
     }
 
@@ -202,6 +238,7 @@ private:
     Header header_;
     detail::StreamShape shape_;
     WriterOptions opts_;
+    AtomicFile atomic_;           // opts_.atomic_rename: owns file_
     std::FILE* file_ = nullptr;
     uint64_t pos_ = 0;
     uint32_t next_index_ = 0;
@@ -229,10 +266,10 @@ Result<std::unique_ptr<Writer>> Writer::create(const std::string& path, const St
     for (size_t i = 0; i < info.templates.size(); ++i)
         if (auto st = detail::check_template(info.templates[i], lim, Code::InvalidArgument, path + ": template " + std::to_string(i), 0); !st)
             return st.error();
+    if (auto st = check_text(info, path); !st) return st.error();
     if (opts.coding != Coding::Stored && opts.coding != Coding::Range && opts.coding != Coding::Replay)
         return make_error(Code::InvalidArgument, path + ": unknown frame coding");
-    const std::string out_path = opts.atomic_rename ? path + ".partial" : path;
-    auto w = std::make_unique<FileWriter>(path, out_path, info, opts);
+    auto w = std::make_unique<FileWriter>(path, info, opts);
     if (auto st = w->open_and_write_start(info); !st) return st.error();
     return std::unique_ptr<Writer>(std::move(w));
 }

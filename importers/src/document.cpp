@@ -6,6 +6,7 @@
 
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
+#include "spt/utf8.hpp"
 
 namespace spt::import {
 
@@ -166,6 +167,12 @@ Status validate(const Document& doc, const std::string& source, const Limits& li
         if (T[i].width < 1 || T[i].height < 1 || T[i].width > lim.max_template_side || T[i].height > lim.max_template_side ||
             T[i].pixels.size() != size_t(T[i].width) * T[i].height)
             return Error(bad(source, "template " + std::to_string(i) + ": bitmap size or sample count is wrong"));
+    }
+    for (size_t i = 0; i < T.size(); ++i)
+        if (!is_valid_utf8(T[i].name)) return Error(bad(source, "template " + std::to_string(i) + ": the name is not valid UTF-8"));
+    for (const auto& [k, v] : doc.info.metadata) {
+        if (!is_valid_utf8(k)) return Error(bad(source, "metadata key \"" + printable_text(k) + "\" is not valid UTF-8"));
+        if (!is_valid_utf8(v)) return Error(bad(source, "metadata key \"" + k + "\": the value is not valid UTF-8"));
     }
     if (doc.frames.empty()) return Error(bad(source, "no frames"));
     size_t live = 0;

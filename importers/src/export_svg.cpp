@@ -12,6 +12,7 @@
 #include "spt_import/codec.hpp"
 #include "spt_import/export.hpp"
 #include "spt_import/xml.hpp"
+#include "spt/atomic_file.hpp"
 
 namespace spt::import {
 
@@ -134,25 +135,7 @@ Result<std::string> export_svg(const StreamInfo& info, const std::vector<Stroke>
 }
 
 Status write_file_atomic(const std::string& path, const std::string& data) {
-    const std::string tmp = path + ".partial";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return Error(make_error(Code::IoError, path + ": cannot open for writing"));
-        out.write(data.data(), std::streamsize(data.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::remove(tmp.c_str());
-            return Error(make_error(Code::IoError, path + ": write failed"));
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        return Error(make_error(Code::IoError, path + ": cannot rename into place: " + ec.message()));
-    }
-    return {};
+    return spt::write_file_atomic(path, data.data(), data.size());
 }
 
 }  // namespace spt::import

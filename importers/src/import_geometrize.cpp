@@ -7,6 +7,7 @@
 #include "spt_import/importer.hpp"
 #include "spt_import/json.hpp"
 #include "spt_import/shapes.hpp"
+#include "number_cast.hpp"
 
 namespace spt::import {
 
@@ -93,8 +94,13 @@ Result<Document> load(const std::string& path, std::string_view text, const Impo
     if (!list.empty() && list[0].type == 1 && list[0].c.a == 255 && std::min(list[0].d[0], list[0].d[2]) <= 0 &&
         std::min(list[0].d[1], list[0].d[3]) <= 0) {
         const auto& d = list[0].d;
-        W = uint32_t(std::max(d[0], d[2])) + 1;
-        H = uint32_t(std::max(d[1], d[3])) + 1;
+        // Data values are within +-2^20; a rectangle left of or above the origin gives no size.
+        uint32_t w = 0, h = 0;
+        if (!round_to(std::trunc(std::max(d[0], d[2])) + 1, 1u, 1u << 21, w) ||
+            !round_to(std::trunc(std::max(d[1], d[3])) + 1, 1u, 1u << 21, h))
+            return at(path, *list[0].v, "the background rectangle ends before the origin");
+        W = w;
+        H = h;
         bg = {list[0].c.r, list[0].c.g, list[0].c.b};
         first = 1;
     } else {

@@ -6,6 +6,7 @@
 #include "spt_import/importer.hpp"
 #include "spt_import/json.hpp"
 #include "spt_import/shapes.hpp"
+#include "spt/utf8.hpp"
 
 namespace spt::import {
 
@@ -23,6 +24,13 @@ public:
     int64_t version = 1;
     Error err(const Value& v, const std::string& what) const {
         return make_error(Code::Corrupt, src_ + ":" + std::to_string(v.line) + ": " + what);
+    }
+    // SPEC.md 3.2-3.3: the text a file carries is UTF-8; the JSON parser passes raw bytes through.
+    bool utf8(const Value& v, const std::string& name, Error& e) const {
+        size_t at = 0;
+        if (is_valid_utf8(v.text, &at)) return true;
+        e = err(v, name + " is not valid UTF-8 (byte " + std::to_string(at) + " of the string)");
+        return false;
     }
     bool need(const Value& v, Type t, const std::string& name, Error& e) const {
         if (v.type == t) return true;
@@ -285,6 +293,7 @@ bool read_templates(const Ctx& c, const Value* tv, std::vector<Template>& T, Err
         if (const Value* n = t.find("name")) {
             if (!c.need(*n, Type::String, where + ".name", e)) return false;
             if (n->text.size() > 255) { e = c.err(*n, where + ".name longer than 255 bytes"); return false; }
+            if (!c.utf8(*n, where + ".name", e)) return false;
             out.name = n->text;
         }
         if (const Value* ss = t.find("supersample")) {  // analytic kinds: 0 or 2..16 (SPEC.md 3.2)
@@ -481,6 +490,8 @@ Result<Document> load(const std::string& path, std::string_view text, const Impo
         if (!c.need(*m, Type::Object, "metadata", e)) return e;
         for (const auto& [k, v] : m->members) {
             if (!c.need(v, Type::String, "metadata." + k, e)) return e;
+            if (!is_valid_utf8(k)) return c.err(v, "metadata key \"" + printable_text(k) + "\" is not valid UTF-8");
+            if (!c.utf8(v, "metadata key \"" + k + "\": the value", e)) return e;
             doc.info.metadata.emplace_back(k, v.text);
         }
     }

@@ -10,6 +10,7 @@
 #include "spt_import/importer.hpp"
 #include "spt_import/shapes.hpp"
 #include "spt_import/xml.hpp"
+#include "number_cast.hpp"
 
 namespace spt::import {
 
@@ -180,8 +181,10 @@ private:
         if (!has_h) h = vb.empty() ? 0 : vb[3];
         if (!(w >= 1) || !(h >= 1)) return fail(root, "the canvas size is missing (width/height or viewBox) or below 1 px");
         if (w > opts_.limits.max_width || h > opts_.limits.max_height || w * h > double(opts_.limits.max_pixels))
-            return fail(root, "canvas " + std::to_string(int64_t(w)) + "x" + std::to_string(int64_t(h)) + " is above the limits");
-        const uint32_t W = uint32_t(std::lround(w)), H = uint32_t(std::lround(h));
+            return fail(root, "canvas " + number_text(w) + "x" + number_text(h) + " is above the limits");
+        uint32_t W = 0, H = 0;
+        if (!round_to(w, 1u, opts_.limits.max_width, W) || !round_to(h, 1u, opts_.limits.max_height, H))
+            return fail(root, "canvas " + number_text(w) + "x" + number_text(h) + " is above the limits");
         doc_.info.header = default_header(W, H, Rgb8{255, 255, 255});
         if (!vb.empty()) {
             // preserveAspectRatio="none" semantics: each axis scaled on its own. Tools write
@@ -252,7 +255,8 @@ private:
         return true;
     }
 
-    static uint8_t alpha(double o) { return uint8_t(std::lround(std::clamp(o, 0.0, 1.0) * 255)); }
+    // lround (halves away from zero) as ever; NaN ("nan" parses) is transparent.
+    static uint8_t alpha(double o) { return uint8_t(std::lround(std::clamp(std::isnan(o) ? 0.0 : o, 0.0, 1.0) * 255)); }
 
     Rgba8 fill_color(const Style& st) const {
         return {st.fill.r, st.fill.g, st.fill.b, alpha(st.fill_opacity * st.opacity)};

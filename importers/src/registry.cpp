@@ -57,7 +57,8 @@ bool split_pattern(const std::string& name, std::string& prefix, std::string& su
     if (std::regex_search(name, m, printf_re)) {
         prefix = m.prefix();
         suffix = m.suffix();
-        digits = m[1].length() ? std::stoi(m[1]) : 0;
+        // A width of more than two digits matches no file name (and would overflow stoi).
+        digits = m[1].length() == 0 ? 0 : m[1].length() <= 2 ? std::stoi(m[1]) : 100;
         return true;
     }
     auto a = name.find('#');

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "number_cast.hpp"
+
 namespace spt::import {
 
 namespace {
@@ -212,9 +214,8 @@ bool parse_color(std::string_view s, Rgb8& out, bool& is_none) {
             if (pct) part.remove_suffix(1);
             if (!parse_number(part, v[i])) return false;
             if (pct) v[i] *= 2.55;
-            v[i] = std::clamp(std::nearbyint(v[i]), 0.0, 255.0);
         }
-        out = {uint8_t(v[0]), uint8_t(v[1]), uint8_t(v[2])};
+        out = {clamp_round<uint8_t>(v[0], 0, 255), clamp_round<uint8_t>(v[1], 0, 255), clamp_round<uint8_t>(v[2], 0, 255)};
         return true;
     }
     for (const auto& n : kNames)

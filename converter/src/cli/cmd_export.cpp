@@ -8,6 +8,8 @@
 #include "io/sequence.hpp"
 #include "io/spt_file.hpp"
 #include "spt_import/export.hpp"
+#include "spt_import/importer.hpp"
+#include "spt/utf8.hpp"
 
 namespace spt::cli {
 
@@ -69,7 +71,20 @@ int cmd_export(int argc, char** argv) {
             if (!f) return fail(io::frame_place(r, i) + ": " + io::describe_error(in, f.error()));
             doc.frames.push_back(std::move(*f));
         }
-        if (Status s = import::write_file_atomic(out, import::export_json(doc)); !s) return fail(s.error().message);
+        // JSON carries UTF-8 only (a file from another writer may hold other bytes), and what
+        // export writes, import must read back.
+        for (const auto& [k, v] : doc.info.metadata)
+            if (!is_valid_utf8(k) || !is_valid_utf8(v))
+                return fail(in + ": metadata key \"" + printable_text(k) + "\" holds bytes that are not UTF-8 (SPEC.md 3.3); JSON cannot carry them");
+        for (size_t t = 0; t < doc.info.templates.size(); ++t)
+            if (!is_valid_utf8(doc.info.templates[t].name))
+                return fail(in + ": template " + std::to_string(t) + ": the name is not UTF-8 (SPEC.md 3.2); JSON cannot carry it");
+        const std::string text = import::export_json(doc);
+        const size_t limit = import::ImportOptions{}.max_file_bytes;
+        if (text.size() > limit)
+            return fail(out + ": the JSON would be " + std::to_string(text.size()) + " bytes, above the " +
+                        std::to_string(limit) + " that spt import reads back; nothing written (keep the .spt, or export SVG frames)");
+        if (Status s = import::write_file_atomic(out, text); !s) return fail(s.error().message);
         return 0;
     }
 

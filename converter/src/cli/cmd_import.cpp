@@ -10,6 +10,7 @@
 #include "io/image_io.hpp"
 #include "spt_import/evaluate.hpp"
 #include "spt_import/importer.hpp"
+#include "spt/utf8.hpp"
 
 namespace spt::cli {
 
@@ -106,7 +107,7 @@ int cmd_import(int argc, char** argv) {
     // export -> import reproduces the .spt byte for byte.
     if (doc->info.metadata.empty()) {
         doc->info.metadata.emplace_back("software", "spt import");
-        doc->info.metadata.emplace_back("source", std::filesystem::path(in).filename().string());
+        doc->info.metadata.emplace_back("source", printable_text(std::filesystem::path(in).filename().string()));
         import::drop_unused_tables(*doc);
     }
 

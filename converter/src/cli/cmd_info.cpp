@@ -39,6 +39,14 @@ Sections sections(const Reader& r) {
     return s;
 }
 
+// What the summary line says of a file that is not sound: the reader's last warning is where it
+// stopped (a truncated tail, trailing bytes after the end chunk, a damaged chunk).
+std::string soundness(const Reader& r) {
+    if (r.complete()) return "";
+    if (r.warnings().empty() || r.warnings().back().code == Code::Truncated) return ", INCOMPLETE (no end chunk)";
+    return ", NOT SOUND (" + r.warnings().back().message + ")";
+}
+
 }  // namespace
 
 int cmd_info(int argc, char** argv) {
@@ -187,7 +195,7 @@ int cmd_info(int argc, char** argv) {
     }
 
     std::printf("%s: .spt %u.%u, %llu bytes%s%s\n", path.c_str(), h.version_major, h.version_minor,
-                (unsigned long long)sec.total, r.complete() ? "" : ", INCOMPLETE (no end chunk)",
+                (unsigned long long)sec.total, soundness(r).c_str(),
                 r.has_index() ? "" : ", no index");
     std::printf("canvas      %u x %u, %u/%u fps (%.3f), colour %s, background #%02x%02x%02x\n", h.width,
                 h.height, h.fps.num, h.fps.den, fps, color, h.background.r, h.background.g, h.background.b);

@@ -17,6 +17,8 @@
 #include "paint/rate_control.hpp"
 #include "spt/render.hpp"
 #include "spt/version.hpp"
+#include "spt/atomic_file.hpp"
+#include "spt/utf8.hpp"
 #include "spt/writer.hpp"
 #include "video/video_paint.hpp"
 
@@ -83,9 +85,9 @@ Status write_side_by_side(const std::string& path, const io::Image& src, const C
 std::vector<std::pair<std::string, std::string>> still_metadata(const PaintCommandOptions& o) {
     return {
         {"software", std::string("spt ") + library_version()},
-        {"source", std::filesystem::path(o.input).filename().string()},
+        {"source", printable_text(std::filesystem::path(o.input).filename().string())},  // names need not be UTF-8
         {"painter.seed", std::to_string(o.paint.seed)},
-        {"painter.options", o.canonical()},
+        {"painter.options", printable_text(o.canonical())},
     };
 }
 
@@ -93,6 +95,13 @@ int paint_still(const PaintCommandOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     io::ReadOptions ro;
     ro.background = o.background;
+    // Every output is checked before the work: a folder, a missing folder or an unknown image
+    // extension fails now, not after the paint, and leaves nothing.
+    if (Status c = check_output_path(o.output); !c) return fail(c.error().message);
+    if (!o.preview.empty())
+        if (Status c = io::check_image_output(o.preview); !c) return fail("--preview " + c.error().message);
+    if (!o.side_by_side.empty())
+        if (Status c = io::check_image_output(o.side_by_side); !c) return fail("--side-by-side " + c.error().message);
     auto img = io::read_image(o.input, ro);
     if (!img) return fail(img.error().message);
     const uint32_t W = img->width, H = img->height;
@@ -188,7 +197,7 @@ int paint_still(const PaintCommandOptions& o) {
     if (!s) {
         (*writer)->abort();
         progress.finish(false, st.strokes, st.psnr, s.error().message);
-        return fail(o.output + ": " + s.error().message);
+        return fail(s.error().message);  // names the file
     }
     const uint64_t bytes = (*writer)->stats().total_bytes;
 

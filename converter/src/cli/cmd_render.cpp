@@ -10,6 +10,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "io/image_io.hpp"
+#include "io/private_output.hpp"
 #include "io/progress.hpp"
 #include "io/sequence.hpp"
 #include "io/spt_file.hpp"
@@ -32,16 +33,21 @@ std::string lower_ext(const std::string& p) {
     return e;
 }
 
-// A preview video through OpenCV, written under a temporary name and renamed when complete.
+// A preview video through OpenCV, written inside a private folder (io/private_output.hpp) and
+// moved into place when complete.
 class VideoOut {
 public:
     bool open(const std::string& path, double fps, uint32_t w, uint32_t h, std::string& err) {
-        path_ = path;
         const std::string ext = lower_ext(path);
-        tmp_ = path + ".partial" + ext;  // OpenCV picks the container from the extension
+        auto p = io::PrivateOutput::create(path);
+        if (!p) {
+            err = p.error().message;
+            return false;
+        }
+        out_ = std::move(*p);  // OpenCV picks the container from the extension, kept by file()
         const int fourcc = ext == ".avi" ? cv::VideoWriter::fourcc('M', 'J', 'P', 'G')
                                          : cv::VideoWriter::fourcc('m', 'p', '4', 'v');
-        if (!writer_.open(tmp_, cv::CAP_FFMPEG, fourcc, fps > 0 ? fps : 24.0, cv::Size(int(w), int(h)))) {
+        if (!writer_.open(out_.file(), cv::CAP_FFMPEG, fourcc, fps > 0 ? fps : 24.0, cv::Size(int(w), int(h)))) {
             err = path + ": OpenCV cannot create a " + ext + " video here";
             discard();
             return false;
@@ -55,23 +61,19 @@ public:
     }
     bool finish(std::string& err) {
         writer_.release();
-        std::error_code ec;
-        fs::rename(tmp_, path_, ec);
-        if (ec) {
-            err = path_ + ": cannot rename the finished video into place: " + ec.message();
-            discard();
+        if (Status s = out_.commit(); !s) {
+            err = s.error().message;
             return false;
         }
         return true;
     }
     void discard() {
         writer_.release();
-        std::error_code ec;
-        fs::remove(tmp_, ec);
+        out_.discard();
     }
 private:
     cv::VideoWriter writer_;
-    std::string path_, tmp_;
+    io::PrivateOutput out_;
     cv::Mat bgr_;
 };
 
@@ -92,7 +94,7 @@ int cmd_render(int argc, char** argv) {
         .epilog("Frames are reached through the index: rendering frames 500-510 decodes from the "
                 "key frame at or before 500 only. PNG, TIFF and JPEG are written 8-bit sRGB; EXR "
                 "half float scene-linear (the inverse of the sRGB curve). Every file is written "
-                "under a temporary name and renamed when complete.");
+                "without a name until complete (a video: in a private folder) and then moved into place.");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     io::ProgressMode mode;
     if (!io::parse_progress_mode(args.get("progress"), mode))
@@ -129,12 +131,29 @@ int cmd_render(int argc, char** argv) {
     if (!sequence && !video && todo.size() > 1)
         return args.usage_error("--frames names " + std::to_string(todo.size()) +
                                 " frames but -o " + out + " has no frame placeholder (####, %04d, @)");
-    for (const auto& [a, b] : range->spans)
-        if (b > last)
-            return fail(path + ": has frames 0-" + std::to_string(last) + "; the range asks for frame " +
-                        std::to_string(b));
-    if (todo.empty() || todo.front() > last)
+    // A damaged file: the reader kept the frames before the damage. They are rendered, and the
+    // run still fails, naming the first frame it could not reach and where the damage is.
+    const bool frames_lost = !r.complete() && (h.frame_count == kUnknownFrameCount || h.frame_count > frames.size());
+    std::string lost;
+    if (frames_lost) {
+        const Error* w = r.warnings().empty() ? nullptr : &r.warnings().back();  // where the scan stopped
+        const uint64_t at = w && w->offset ? w->offset : r.file_size();
+        std::string why = w ? io::describe_error(path, *w) : std::string("the file ends early");
+        if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
+        lost = path + ": frame " + std::to_string(frames.size()) + " (byte offset " + std::to_string(at) +
+               ") could not be rendered: " + why;
+    }
+    bool beyond = false;  // the request names frames past the last one found
+    for (const auto& [a, b] : range->spans) beyond = beyond || b > last;
+    if (single > last) beyond = true;
+    if (beyond && !frames_lost)
+        return fail(path + ": has frames 0-" + std::to_string(last) + "; the range asks for frame " +
+                    std::to_string(std::max(single, range->spans.empty() ? 0L : range->spans.back().second)));
+    const bool fail_after = frames_lost && (beyond || (!args.has("frames") && !args.has("frame")) || todo.empty());
+    if (todo.empty() || todo.front() > last) {
+        if (fail_after) return fail(lost + "; nothing written");
         return fail(path + ": has frames 0-" + std::to_string(last) + "; nothing to render in that range");
+    }
 
     if (auto rc = Renderer::create(h, r.info().templates); !rc) return fail(io::describe_error(path, rc.error()));
     Canvas canvas(h.width, h.height, h.background);
@@ -146,12 +165,14 @@ int cmd_render(int argc, char** argv) {
 
     io::Progress progress(mode, "render", double(todo.size()));
     size_t done = 0;
+    std::string first_bad;  // the first frame that did not decode; later ones are still tried
     for (long f : todo) {
         // Decode and render in one: a key frame of stamps in coding 0 renders straight from its
         // records; other frames through the reader's live list.
         if (Status s = r.render_frame(size_t(f), canvas); !s) {
-            if (video) vout.discard();
-            return fail(io::frame_error(r, size_t(f), path, s.error()));
+            if (first_bad.empty()) first_bad = io::frame_error(r, size_t(f), path, s.error()) + " (not rendered)";
+            if (video) break;  // a video cannot skip a frame: keep the frames before it
+            continue;
         }
         if (video) {
             vout.write(canvas);
@@ -162,7 +183,17 @@ int cmd_render(int argc, char** argv) {
         }
         progress.update(double(++done), "frame " + std::to_string(f));
     }
-    if (video && !vout.finish(err)) return fail(err);
+    if (video && done == 0) vout.discard();
+    else if (video && !vout.finish(err)) return fail(err);
+    const std::string summary = "wrote " + std::to_string(done) + " of " +
+                                std::to_string(frames_lost && h.frame_count != kUnknownFrameCount
+                                                   ? size_t(h.frame_count) : todo.size()) + " frames";
+    if (!first_bad.empty() || fail_after) {
+        progress.finish(false, summary);
+        return fail((first_bad.empty() ? lost : first_bad) + "; " + summary);
+    }
+    if (!r.complete())  // damaged, but every frame asked for was rendered
+        for (const auto& w : r.warnings()) std::fprintf(stderr, "spt render: warning: %s\n", io::describe_error(path, w).c_str());
     progress.finish(true, std::to_string(done) + " frames");
     return 0;
 }

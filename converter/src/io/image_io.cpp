@@ -2,6 +2,7 @@
 #include "io/image_io.hpp"
 
 #include <OpenImageIO/color.h>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -9,6 +10,9 @@
 #include <filesystem>
 #include <memory>
 #include <system_error>
+
+#include "io/private_output.hpp"
+#include "spt/atomic_file.hpp"
 
 namespace spt::io {
 
@@ -187,16 +191,26 @@ Status write_image(const std::string& path, uint32_t width, uint32_t height, con
     if (exr) spec.attribute("compression", "zip");
     spec.attribute("Software", "spt");
 
-    // The plugin was chosen from the final name; the temporary name keeps the directory so the
-    // rename stays on one filesystem.
-    const std::string tmp = path + ".partial";
+    // The plugin was chosen from the final name. It encodes into memory (an OIIO IOProxy), and
+    // the bytes go through spt::AtomicFile: no temporary name to redirect, none left if killed.
+    // A plugin that cannot write to a proxy writes inside a fresh private folder instead.
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput proxy(bytes);
+    const bool in_memory = out->supports("ioproxy");
+    PrivateOutput named;
     auto fail = [&](const std::string& what) -> Status {
         out.reset();
-        std::error_code ec;
-        fs::remove(tmp, ec);
+        named.discard();
         return io_error(path, what);
     };
-    if (!out->open(tmp, spec)) return fail("cannot create file: " + oiio_message(out->geterror()));
+    if (in_memory) {
+        if (!out->set_ioproxy(&proxy) || !out->open(path, spec)) return fail("cannot create file: " + oiio_message(out->geterror()));
+    } else {
+        auto p = PrivateOutput::create(path);
+        if (!p) return p.error();
+        named = std::move(*p);
+        if (!out->open(named.file(), spec)) return fail("cannot create file: " + oiio_message(out->geterror()));
+    }
     bool ok;
     const size_t n = size_t(width) * size_t(height) * 3;
     if (exr) {
@@ -212,13 +226,13 @@ Status write_image(const std::string& path, uint32_t width, uint32_t height, con
     if (!ok) return fail("cannot write pixels: " + oiio_message(out->geterror()));
     if (!out->close()) return fail("cannot finish file: " + oiio_message(out->geterror()));
     out.reset();
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        return io_error(path, "cannot rename the finished file into place: " + ec.message());
-    }
-    return {};
+    if (in_memory) return write_file_atomic(path, bytes.data(), bytes.size());
+    return named.commit();
+}
+
+Status check_image_output(const std::string& path) {
+    if (!is_writable_image_name(path)) return io_error(path, "no image writer for this extension", Code::InvalidArgument);
+    return check_output_path(path);
 }
 
 }  // namespace spt::io

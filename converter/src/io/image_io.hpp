@@ -44,8 +44,8 @@ Result<Image> read_image(const std::string& path, const ReadOptions& opts = {});
 
 // Writes by extension (.png, .exr, .tif, .jpg, ...). EXR is written as half float, linear
 // (the inverse of read_image's transform), so that render output composes in VFX tools.
-// PNG and TIFF are 8-bit, JPEG quality 95. The file is written under a temporary name beside
-// the target and renamed into place, so a failed write never leaves a partial file.
+// PNG and TIFF are 8-bit, JPEG quality 95. The file is encoded in memory and written through
+// spt::AtomicFile, so a failed or killed write never leaves a partial file.
 Status write_image(const std::string& path, uint32_t width, uint32_t height, const uint8_t* rgb);
 inline Status write_image(const std::string& path, const Canvas& c) {
     return write_image(path, c.width, c.height, c.rgb.data());
@@ -53,5 +53,7 @@ inline Status write_image(const std::string& path, const Canvas& c) {
 
 // True when OpenImageIO has a writer for the file's extension.
 bool is_writable_image_name(const std::string& path);
+// Before the work: OpenImageIO has a writer for the extension, and `path` can be created.
+Status check_image_output(const std::string& path);
 
 }  // namespace spt::io

@@ -10,6 +10,7 @@
 #include "video/frame_source.hpp"
 #include "io/roi_file.hpp"
 #include "video/video_encoder.hpp"
+#include "spt/utf8.hpp"
 
 namespace spt::video {
 
@@ -91,9 +92,9 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
 
     std::vector<std::pair<std::string, std::string>> meta = {
         {"software", "spt video painter"},
-        {"source", opts.input},
+        {"source", printable_text(opts.input)},  // names need not be UTF-8
         {"painter.seed", std::to_string(opts.paint.seed)},
-        {"painter.options", options_text(opts)},
+        {"painter.options", printable_text(options_text(opts))},
     };
     VideoPaintOptions eo = opts;
     if (opts.target_bytes > 0) {
@@ -159,7 +160,15 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
 }
 
 int run_video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {
+    VideoPaintReport local;
+    if (!report) report = &local;
     Status st = video_paint(opts, progress, report);
+    if (!st && report->interrupted && st.error().code == Code::BadState) {
+        // Stopped by a signal after a finished frame: the output is valid (README: exit 3).
+        progress.finish(false, st.error().message);
+        std::fprintf(stderr, "spt paint: %s\n", st.error().message.c_str());
+        return kExitInterrupted;
+    }
     if (!st) {
         progress.finish(false, st.error().message);
         std::fprintf(stderr, "spt paint: %s\n", st.error().message.c_str());

@@ -99,8 +99,13 @@ struct VideoPaintReport {
     std::vector<uint32_t> key_frame_indices;    // output frame indices
 };
 
+// Exit status of a paint stopped by SIGINT/SIGTERM after a finished frame: the output is a
+// valid .spt holding every finished frame (a failure is 1, bad options 2).
+constexpr int kExitInterrupted = 3;
+
 // Encodes `opts.input` into `opts.output`. Returns the process exit code (0 ok, 1 failure,
-// 2 bad options) and prints errors to stderr naming the file or frame. `report` may be null.
+// 2 bad options, kExitInterrupted) and prints errors to stderr naming the file or frame.
+// `report` may be null.
 int run_video_paint(const VideoPaintOptions& opts, io::Progress& progress,
                     VideoPaintReport* report = nullptr);
 

@@ -101,5 +101,6 @@
 #include "spt/replay.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
+#include "spt/utf8.hpp"
 #include "spt/version.hpp"
 #include "spt/writer.hpp"

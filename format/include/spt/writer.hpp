@@ -13,8 +13,9 @@ namespace spt {
 
 struct WriterOptions {
     Coding coding = Coding::Range;
-    // Write to "<path>.partial" and rename to <path> in finish(), so that the final name never
-    // holds a half-written file. abort() removes the partial file.
+    // Write an unnamed (or exclusively created) temporary linked at <path> in finish(), so that
+    // the final name never holds a half-written file and no existing path is written through
+    // (spt/atomic_file.hpp). abort() discards it. false: write <path> itself.
     bool atomic_rename = true;
     // Bitmap templates: Range codes their samples (TMPL coding 1) when `coding` is Range too;
     // Stored writes raw samples. Stored-coded files always get raw templates.

@@ -18,7 +18,7 @@ std::string export_json(const Document& doc);
 // transform="matrix(...)"; curves are round-capped outlines.
 Result<std::string> export_svg(const StreamInfo& info, const std::vector<Stroke>& strokes);
 
-// Writes `data` to `path` through a temporary file renamed into place (no half-written output).
+// Writes `data` to `path` through spt::AtomicFile (no half-written output, no symlink followed).
 Status write_file_atomic(const std::string& path, const std::string& data);
 
 }  // namespace spt::import

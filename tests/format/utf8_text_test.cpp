@@ -1,0 +1,81 @@
+// spt::is_valid_utf8: the Writer refuses text a reader or a JSON export could not carry (issue 20).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "spt/spt.hpp"
+
+using namespace spt;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Dir {
+    fs::path path;
+    Dir() {
+        const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
+        path = fs::temp_directory_path() / ("spt_atomic_" + std::to_string(::getpid()) + "_" + t->name());
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~Dir() { std::error_code ec; fs::remove_all(path, ec); }
+    std::string operator/(const std::string& n) const { return (path / n).string(); }
+    std::vector<std::string> names() const {
+        std::vector<std::string> v;
+        for (const auto& e : fs::directory_iterator(path)) v.push_back(e.path().filename().string());
+        std::sort(v.begin(), v.end());
+        return v;
+    }
+};
+
+StreamInfo small_info() {
+    StreamInfo info;
+    info.header.width = 8;
+    info.header.height = 8;
+    info.header.sets = {{4, 2}};
+    info.header.orientations = default_orientations(4);
+    Template e;
+    e.kind = TemplateKind::Ellipse;
+    info.templates = {e};
+    return info;
+}
+
+}  // namespace
+
+TEST(Utf8, AcceptsWellFormedAndRejectsTheRest) {
+    EXPECT_TRUE(is_valid_utf8(""));
+    EXPECT_TRUE(is_valid_utf8("plain ascii"));
+    EXPECT_TRUE(is_valid_utf8("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8E\xA8 \xF4\x8F\xBF\xBF"));
+    size_t at = 99;
+    EXPECT_FALSE(is_valid_utf8("ab\xFF", &at));
+    EXPECT_EQ(at, 2u);
+    EXPECT_FALSE(is_valid_utf8("\xC0\xAF"));          // overlong '/'
+    EXPECT_FALSE(is_valid_utf8("\xE0\x80\xAF"));      // overlong
+    EXPECT_FALSE(is_valid_utf8("\xED\xA0\x80"));      // surrogate U+D800
+    EXPECT_FALSE(is_valid_utf8("\xF4\x90\x80\x80"));  // above U+10FFFF
+    EXPECT_FALSE(is_valid_utf8("\xE2\x82"));          // truncated
+    EXPECT_FALSE(is_valid_utf8("\x80"));              // lone continuation
+    EXPECT_EQ(printable_text("a\xFF\xC3\xA9\n"), "a\\xff\xC3\xA9\\x0a");
+}
+
+TEST(WriterText, RefusesMetadataThatIsNotUtf8NamingTheKey) {
+    Dir d;
+    StreamInfo info = small_info();
+    info.metadata = {{"software", "ok"}, {"title", "caf\xE9"}};
+    auto w = Writer::create(d / "o.spt", info);
+    ASSERT_FALSE(w.ok());
+    EXPECT_NE(w.error().message.find("metadata key \"title\": the value is not valid UTF-8 (byte 3)"), std::string::npos)
+        << w.error().message;
+    info.metadata = {{"ti\xFFtle", "x"}};
+    w = Writer::create(d / "o.spt", info);
+    ASSERT_FALSE(w.ok());
+    EXPECT_NE(w.error().message.find("metadata key \"ti\\xfftle\" is not valid UTF-8"), std::string::npos) << w.error().message;
+    info.metadata.clear();
+    info.templates[0].name = "\xC0\xAF";
+    w = Writer::create(d / "o.spt", info);
+    ASSERT_FALSE(w.ok());
+    EXPECT_NE(w.error().message.find("template 0"), std::string::npos) << w.error().message;
+    EXPECT_TRUE(d.names().empty()) << "nothing is written for a refused file";
+}

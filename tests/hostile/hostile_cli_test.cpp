@@ -1,0 +1,299 @@
+// The spt command against hostile or careless use (issue 20): every case checks the exit
+// status, the message, and what is on disk afterwards; where nothing may be written, that the
+// folder holds nothing new. Inputs: tests/hostile/inputs (make_inputs.py says how each is made).
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+#include "converter/cli_test_util.hpp"
+#include "io/image_io.hpp"
+
+using namespace spt_test;
+
+namespace {
+
+std::string input(const std::string& name) { return std::string(SPT_SOURCE_DIR) + "/tests/hostile/inputs/" + name; }
+std::string golden(const std::string& name) { return std::string(SPT_SOURCE_DIR) + "/tests/format/golden/" + name; }
+
+// The folder's entries, the captured-output files excepted, sorted.
+std::vector<std::string> names(const TempDir& d) {
+    std::vector<std::string> v;
+    for (const auto& e : fs::directory_iterator(d.path)) {
+        const std::string n = e.path().filename().string();
+        if (n != ".stdout" && n != ".stderr") v.push_back(n);
+    }
+    std::sort(v.begin(), v.end());
+    return v;
+}
+using Names = std::vector<std::string>;
+
+size_t count(const std::string& s, const std::string& what) {
+    size_t n = 0;
+    for (size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+    return n;
+}
+
+#define EXPECT_HAS(text, what) EXPECT_NE((text).find(what), std::string::npos) << "missing \"" << (what) << "\" in: " << (text)
+
+// Starts spt, sends `sig` after `after`, waits; true when the signal ended it.
+bool run_and_signal(const std::vector<std::string>& args, int sig, std::chrono::milliseconds after, int* exit_code) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int devnull = ::open("/dev/null", O_WRONLY);
+        ::dup2(devnull, STDOUT_FILENO);
+        ::dup2(devnull, STDERR_FILENO);
+        std::vector<char*> argv{const_cast<char*>(SPT_TOOL)};
+        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        ::execv(SPT_TOOL, argv.data());
+        ::_exit(127);
+    }
+    std::this_thread::sleep_for(after);
+    ::kill(pid, sig);
+    int st = 0;
+    ::waitpid(pid, &st, 0);
+    *exit_code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    return WIFSIGNALED(st);
+}
+
+// A noise image the painter needs many seconds for.
+std::string noise_image(const TempDir& d) {
+    const uint32_t w = 1024, h = 1024;
+    std::vector<uint8_t> px(size_t(w) * h * 3);
+    std::mt19937 rng(7);
+    for (auto& p : px) p = uint8_t(rng());
+    const std::string path = d.file("noise.png");
+    EXPECT_TRUE(spt::io::write_image(path, w, h, px.data()).ok());
+    return path;
+}
+
+}  // namespace
+
+// ---- images that are truncated, empty, not images, or lie about their size ----
+
+TEST(HostileCli, BrokenImagesFailNamingTheFileAndWriteNothing) {
+    TempDir d;
+    const std::pair<const char*, const char*> cases[] = {
+        {"truncated.png", "cannot read pixels"},     {"empty.png", "cannot read image"},
+        {"not_an_image.png", "cannot read image"},   {"lying_size.png", "1000000x1000000, over the size limit"},
+        {"lying_rows.png", "cannot read pixels"},
+    };
+    for (const auto& [file, what] : cases) {
+        auto r = run_spt(d, {"paint", input(file), "-o", d.file("o.spt"), "--preview", d.file("p.png")});
+        EXPECT_EQ(r.code, 1) << file;
+        EXPECT_HAS(r.err, input(file));
+        EXPECT_HAS(r.err, what);
+        EXPECT_EQ(names(d), Names{}) << file;
+    }
+}
+
+// ---- damaged .spt files ----
+
+// Issue 20 item 4: this rendered 1 of 5 frames, printed nothing and exited 0.
+TEST(HostileCli, RenderOfADamagedFileWritesWhatItCanNamesTheFrameAndFails) {
+    TempDir d;
+    auto r = run_spt(d, {"render", input("frame1_length_ffffffff.spt"), "-o", d.file("o.####.png")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "frame 1 (byte offset 717) could not be rendered");
+    EXPECT_HAS(r.err, "claims 4294967295 bytes");
+    EXPECT_HAS(r.err, "wrote 1 of 5 frames");
+    EXPECT_EQ(names(d), Names{"o.0000.png"});
+    // Asking only for what survives succeeds.
+    TempDir e;
+    r = run_spt(e, {"render", input("frame1_length_ffffffff.spt"), "-o", e.file("o.png"), "--frame", "0"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(names(e), Names{"o.png"});
+}
+
+TEST(HostileCli, TruncatedFileRendersItsWholeFramesAndFails) {
+    TempDir d;
+    auto r = run_spt(d, {"render", input("truncated.spt"), "-o", d.file("o.####.png")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "frame 2 (byte offset 756) could not be rendered");
+    EXPECT_HAS(r.err, "wrote 2 of 5 frames");
+    EXPECT_EQ(names(d), (Names{"o.0000.png", "o.0001.png"}));
+    r = run_spt(d, {"info", input("truncated.spt")});
+    EXPECT_HAS(r.out, "INCOMPLETE (no end chunk)");
+}
+
+// It was reported "INCOMPLETE (no end chunk)" although it has one.
+TEST(HostileCli, AFileWithACopyAppendedIsReportedAsTrailingData) {
+    TempDir d;
+    auto r = run_spt(d, {"info", input("appended_copy.spt")});
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_HAS(r.out, "956 bytes follow IEND at byte offset 956");
+    EXPECT_EQ(r.out.find("no end chunk"), std::string::npos) << r.out;
+    r = run_spt(d, {"verify", input("appended_copy.spt")});
+    EXPECT_EQ(r.code, 1);
+    r = run_spt(d, {"render", input("appended_copy.spt"), "-o", d.file("o.####.png")});
+    EXPECT_EQ(r.code, 0) << "every frame renders: " << r.err;
+    EXPECT_HAS(r.err, "warning");
+    EXPECT_EQ(names(d).size(), 5u);
+}
+
+TEST(HostileCli, AHugeStrokeCountNamesTheStrokeLimit) {
+    TempDir d;
+    auto r = run_spt(d, {"verify", input("huge_stroke_count.spt")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "frame 0 (FRAM chunk at byte offset 438)");
+    EXPECT_HAS(r.err, "134217728 strokes exceed the stroke limit of");
+    r = run_spt(d, {"render", input("huge_stroke_count.spt"), "-o", d.file("o.####.png")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "wrote 2 of 5 frames");  // frames 1-2 need frame 0; 3 is a key frame
+    EXPECT_EQ(names(d), (Names{"o.0003.png", "o.0004.png"}));
+}
+
+TEST(HostileCli, LyingHeadersAndChunkLengthsFailBeforeAllocatingAndWriteNothing) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"head_huge_canvas.spt", "canvas 2147483648x2147483648 exceeds the limits"},
+        {"tmpl_length_past_end.spt", "chunk 'TMPL' at byte offset 376 claims 2147483632 bytes"},
+    };
+    for (const auto& [file, what] : cases) {
+        TempDir d;
+        for (const std::vector<std::string>& cmd :
+             {std::vector<std::string>{"verify", input(file)}, {"info", input(file)},
+              {"render", input(file), "-o", d.file("o.####.png")}, {"pack", input(file), "-o", d.file("o.spt")},
+              {"export", input(file), "-o", d.file("o.json")}}) {
+            auto r = run_spt(d, cmd);
+            EXPECT_EQ(r.code, 1) << cmd[0] << " " << file;
+            EXPECT_HAS(r.err, what);
+        }
+        EXPECT_EQ(names(d), Names{}) << file;
+    }
+}
+
+// ---- text that is not UTF-8 ----
+
+TEST(HostileCli, InvalidUtf8IsRefusedAtImportAndExport) {
+    TempDir d;
+    auto r = run_spt(d, {"import", input("strokes_bad_utf8.json"), "-o", d.file("o.spt")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "metadata key \"title\": the value is not valid UTF-8");
+    r = run_spt(d, {"export", input("meta_not_utf8.spt"), "-o", d.file("o.json")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "metadata key \"painter.seed\" holds bytes that are not UTF-8");
+    EXPECT_EQ(names(d), Names{});
+}
+
+TEST(HostileCli, SvgCanvasOf1e93IsNamedAsItIs) {
+    TempDir d;
+    auto r = run_spt(d, {"import", input("svg_1e93.svg"), "-o", d.file("o.spt")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "canvas 1e+93x10 is above the limits");
+    EXPECT_EQ(names(d), Names{});
+}
+
+// ---- outputs: symlinks, folders ----
+
+// Every command that writes a file, as {args before the output, the output name, args after}.
+struct Writing {
+    const char* what;
+    std::vector<std::string> before;
+    std::string out;
+    std::vector<std::string> after;
+};
+std::vector<Writing> writing_commands() {
+    return {
+        {"paint", {"paint", input("good.png"), "-o"}, "o.spt", {"--max-strokes", "50"}},
+        {"paint --preview", {"paint", input("good.png"), "-o", "SCRATCH.spt", "--max-strokes", "50", "--preview"}, "o.png", {}},
+        {"import", {"import", input("strokes_min.json"), "-o"}, "o.spt", {}},
+        {"pack", {"pack", golden("inter_motion.stored.spt"), "-o"}, "o.spt", {}},
+        {"export json", {"export", golden("inter_motion.spt"), "-o"}, "o.json", {}},
+        {"export svg", {"export", golden("inter_motion.spt"), "--frames", "2", "-o"}, "o.svg", {}},
+        {"render", {"render", golden("inter_motion.spt"), "-o"}, "o.png", {}},
+    };
+}
+std::vector<std::string> args_of(const Writing& w, const TempDir& d, const std::string& out) {
+    std::vector<std::string> a;
+    for (const auto& s : w.before) a.push_back(s == "SCRATCH.spt" ? d.file("scratch.spt") : s);
+    a.push_back(out);
+    a.insert(a.end(), w.after.begin(), w.after.end());
+    return a;
+}
+
+// Issue 20 item 3: "ln -s victim.txt o.spt.partial" made spt overwrite victim.txt.
+TEST(HostileCli, SymlinksAtOutputNamesAreNeverFollowed) {
+    for (const Writing& w : writing_commands()) {
+        TempDir d;
+        { std::ofstream(d.file("victim.txt")) << "victim"; }
+        fs::create_symlink("victim.txt", d.path / (w.out + ".partial"));
+        fs::create_symlink("victim.txt", d.path / w.out);
+        auto r = run_spt(d, args_of(w, d, d.file(w.out)));
+        EXPECT_EQ(r.code, 0) << w.what << ": " << r.err;
+        EXPECT_EQ(slurp(d.file("victim.txt")), "victim") << w.what;
+        EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(d.path / w.out))) << w.what << ": the output is still a symlink";
+        Names want{"victim.txt", w.out, w.out + ".partial"};
+        if (w.what == std::string("paint --preview")) want.push_back("scratch.spt");
+        std::sort(want.begin(), want.end());
+        EXPECT_EQ(names(d), want) << w.what;
+    }
+}
+
+TEST(HostileCli, MissingAndReadOnlyFoldersFailNamingThePathAndLeaveNothing) {
+    for (const Writing& w : writing_commands()) {
+        TempDir d;
+        auto r = run_spt(d, args_of(w, d, d.file("missing/" + w.out)));
+        EXPECT_EQ(r.code, 1) << w.what;
+        EXPECT_HAS(r.err, d.file("missing/" + w.out));
+        EXPECT_EQ(names(d), Names{}) << w.what;
+        // Read-only: a mode-0555 folder, or for root (who writes anywhere) /proc/self.
+        std::string ro = "/proc/self";
+        if (::geteuid() != 0) {
+            fs::create_directories(d.path / "ro");
+            ::chmod((d.path / "ro").c_str(), 0555);
+            ro = d.file("ro");
+        }
+        r = run_spt(d, args_of(w, d, ro + "/" + w.out));
+        EXPECT_EQ(r.code, 1) << w.what << " into " << ro;
+        EXPECT_HAS(r.err, ro + "/" + w.out);
+        if (::geteuid() != 0) {
+            EXPECT_TRUE(fs::is_empty(d.path / "ro")) << w.what;
+            ::chmod((d.path / "ro").c_str(), 0755);
+            fs::remove(d.path / "ro");
+        }
+        EXPECT_EQ(names(d), Names{}) << w.what;
+    }
+}
+
+// A folder as output was refused only after the whole paint, the path printed twice.
+TEST(HostileCli, AnOutputThatIsAFolderIsRefusedFirstAndNamedOnce) {
+    TempDir d;
+    fs::create_directories(d.path / "out.spt");
+    auto r = run_spt(d, {"paint", input("good.png"), "-o", d.file("out.spt")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "is a folder");
+    EXPECT_EQ(count(r.err, d.file("out.spt")), 1u) << r.err;
+    EXPECT_EQ(r.err.find("strokes"), std::string::npos) << "refused after painting: " << r.err;
+    EXPECT_EQ(names(d), Names{"out.spt"});
+    EXPECT_TRUE(fs::is_empty(d.path / "out.spt"));
+}
+
+// --preview x.xyz failed with exit 1 but left OUT.spt.
+TEST(HostileCli, AnUnwritablePreviewIsRefusedBeforeTheSptIsWritten) {
+    TempDir d;
+    auto r = run_spt(d, {"paint", input("good.png"), "-o", d.file("o.spt"), "--preview", d.file("x.xyz")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "--preview " + d.file("x.xyz"));
+    EXPECT_EQ(names(d), Names{});
+}
+
+// ---- signals ----
+
+// Killed mid-paint (SIGKILL cannot be caught; SIGINT's default ends the process): the output
+// was an unnamed file, so nothing at all is left.
+TEST(HostileCli, AKilledPaintLeavesNothing) {
+    for (int sig : {SIGKILL, SIGINT, SIGTERM}) {
+        TempDir d;
+        const std::string img = noise_image(d);
+        int code = 0;
+        const bool signalled = run_and_signal({"paint", img, "-o", d.file("o.spt"), "--preview", d.file("p.png"),
+                                               "--max-strokes", "16000000", "--target-psnr", "90", "--threads", "1"},
+                                              sig, std::chrono::milliseconds(1000), &code);
+        EXPECT_TRUE(signalled) << "signal " << sig << ": the paint ended by itself (exit " << code << ")";
+        EXPECT_EQ(names(d), Names{"noise.png"}) << "signal " << sig;
+    }
+}
