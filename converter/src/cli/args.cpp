@@ -1,57 +1,168 @@
-// Shared command-line parser (see args.hpp).
+// The shared command-line layer (see args.hpp) on CLI11.
 #include "cli/args.hpp"
 
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
+#include <CLI/CLI.hpp>
+
 namespace spt::cli {
 
+namespace {
+
+// spt's help layout: "spt CMD: summary", the hand-written synopsis (it says more than a list of
+// option names), the generated argument and option lists (wrapped at 100 columns, the text in
+// a column of its own), then the epilog.
+class HelpFormatter : public CLI::Formatter {
+public:
+    HelpFormatter(std::string title, std::string usage) : title_(std::move(title)), usage_(std::move(usage)) {
+        column_width(kColumn);
+    }
+    std::string make_help(const CLI::App* app, std::string, CLI::AppFormatMode) const override {
+        std::string out = title_ + "\n\nusage: " + usage_ + "\n";
+        out += make_group("arguments", true, app->get_options([](const CLI::Option* o) { return o->get_positional(); }));
+        for (const std::string& g : app->get_groups())
+            out += make_group(g, false, app->get_options([&](const CLI::Option* o) {
+                return o->get_group() == g && o->nonpositional();
+            }));
+        // The epilog, each line wrapped at kWidth.
+        const std::string f = app->get_footer();
+        if (!f.empty()) out += "\n";
+        for (size_t p = 0; p < f.size();) {
+            size_t nl = f.find('\n', p);
+            if (nl == std::string::npos) nl = f.size();
+            out += wrap(std::string(), f.substr(p, nl - p), 0);
+            p = nl + 1;
+        }
+        return out;
+    }
+    std::string make_group(std::string group, bool positional, std::vector<const CLI::Option*> opts) const override {
+        if (opts.empty()) return {};
+        std::string out = "\n" + group + ":\n";
+        for (const CLI::Option* o : opts) out += make_option(o, positional);
+        return out;
+    }
+    std::string make_option(const CLI::Option* opt, bool positional) const override {
+        std::string left = "  ";
+        if (positional) {
+            left += opt->get_name() + (opt->get_expected_max() > 1 ? "..." : "");
+        } else {
+            const auto& s = opt->get_snames();
+            left += s.empty() ? "    " : "-" + s.front() + ", ";
+            left += "--" + opt->get_lnames().front();
+            if (!opt->get_type_name().empty()) left += " " + opt->get_type_name();
+        }
+        return wrap(left, opt->get_description(), kColumn);
+    }
+
+private:
+    static constexpr size_t kColumn = 30, kWidth = 100;
+    // `left` padded to `column` (or on a line of its own when longer), then `text` wrapped at
+    // kWidth, continued under `column`.
+    static std::string wrap(std::string left, const std::string& text, size_t column) {
+        if (left.size() < column) left.resize(column, ' ');
+        else if (!left.empty()) left += "\n" + std::string(column, ' ');
+        size_t col = column;
+        for (size_t p = 0; p < text.size();) {
+            size_t sp = text.find(' ', p);
+            if (sp == std::string::npos) sp = text.size();
+            const size_t n = sp - p;
+            if (col + n > kWidth && col > column) {
+                while (!left.empty() && left.back() == ' ') left.pop_back();
+                left += "\n" + std::string(column, ' ');
+                col = column;
+            }
+            left.append(text, p, n);
+            col += n;
+            if (sp < text.size()) { left += ' '; ++col; }
+            p = sp + 1;
+        }
+        return left + "\n";
+    }
+    std::string title_, usage_;
+};
+
+}  // namespace
+
+struct Args::Impl {
+    enum class Kind { Flag, Option, Multi };
+    struct Opt {
+        std::string name;
+        Kind kind;
+        CLI::Option* cli;
+    };
+    struct Pos {
+        std::string name;
+        CLI::Option* cli;
+    };
+    CLI::App app;
+    std::vector<Opt> opts;
+    std::vector<Pos> pos;
+    std::string group = "options";
+
+    Impl(const std::string& command, const std::string& summary, const std::string& usage)
+        : app(summary, "spt " + command) {
+        app.formatter(std::make_shared<HelpFormatter>("spt " + command + ": " + summary, usage));
+        app.set_help_flag("-h,--help", "show this help and exit")->group("options");
+    }
+
+    static std::string names(const std::string& name, char short_name) {
+        return (short_name ? std::string("-") + short_name + "," : std::string()) + "--" + name;
+    }
+};
+
 Args::Args(std::string command, std::string summary, std::string usage)
-    : command_(std::move(command)), summary_(std::move(summary)), usage_(std::move(usage)) {
-    flag("help", "show this help and exit", 'h');
-}
+    : impl_(std::make_unique<Impl>(command, summary, usage)), command_(std::move(command)) {}
+
+Args::~Args() = default;
 
 Args& Args::flag(const std::string& name, const std::string& help, char short_name) {
-    opts_.push_back({name, "", help, "", short_name, Kind::Flag});
+    CLI::Option* o = impl_->app.add_flag(Impl::names(name, short_name), help);
+    o->group(impl_->group)->disable_flag_override();
+    impl_->opts.push_back({name, Impl::Kind::Flag, o});
     return *this;
 }
 
 Args& Args::option(const std::string& name, const std::string& metavar, const std::string& help,
                    char short_name, const std::string& def) {
-    opts_.push_back({name, metavar, help, def, short_name, Kind::Option});
+    CLI::Option* o = impl_->app.add_option(Impl::names(name, short_name));
+    o->description(def.empty() ? help : help + " (default: " + def + ")");
+    o->type_name(metavar)->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)->group(impl_->group);
+    impl_->opts.push_back({name, Impl::Kind::Option, o});
+    if (!def.empty()) defaults_[name] = def;
     return *this;
 }
 
 Args& Args::multi(const std::string& name, const std::string& metavar, const std::string& help,
                   char short_name) {
-    opts_.push_back({name, metavar, help, "", short_name, Kind::Multi});
+    CLI::Option* o = impl_->app.add_option(Impl::names(name, short_name));
+    o->description(help + " (repeatable)");
+    o->type_name(metavar)->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->group(impl_->group);
+    impl_->opts.push_back({name, Impl::Kind::Multi, o});
     return *this;
 }
 
 Args& Args::positional(const std::string& name, const std::string& help, bool required,
                        bool variadic) {
-    pos_.push_back({name, help, required, variadic});
+    CLI::Option* o = impl_->app.add_option(name);
+    o->description(required ? help : help + " (optional)");
+    o->type_name("");
+    if (variadic) o->expected(required ? 1 : 0, CLI::detail::expected_max_vector_size);
+    if (required) o->required();
+    impl_->pos.push_back({name, o});
+    return *this;
+}
+
+Args& Args::group(const std::string& title) {
+    impl_->group = title;
     return *this;
 }
 
 Args& Args::epilog(const std::string& text) {
-    epilog_ = text;
+    impl_->app.footer(text);
     return *this;
-}
-
-const Args::Opt* Args::find_long(const std::string& name) const {
-    for (const auto& o : opts_)
-        if (o.name == name) return &o;
-    return nullptr;
-}
-
-const Args::Opt* Args::find_short(char c) const {
-    for (const auto& o : opts_)
-        if (o.short_name == c) return &o;
-    return nullptr;
 }
 
 int Args::usage_error(const std::string& msg) const {
@@ -61,71 +172,23 @@ int Args::usage_error(const std::string& msg) const {
 }
 
 int Args::parse(int argc, char** argv) {
-    std::vector<std::string> positionals;
-    bool options_done = false;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (options_done || a.size() < 2 || a[0] != '-' ||
-            (a.size() > 1 && (std::isdigit(static_cast<unsigned char>(a[1])) || a[1] == '.'))) {
-            positionals.push_back(a);  // "-" alone (stdin/stdout) and negative numbers too
-            continue;
-        }
-        if (a == "--") {
-            options_done = true;
-            continue;
-        }
-        const Opt* o = nullptr;
-        std::optional<std::string> inline_value;
-        std::string shown = a;
-        if (a[1] == '-') {
-            std::string name = a.substr(2);
-            if (size_t eq = name.find('='); eq != std::string::npos) {
-                inline_value = name.substr(eq + 1);
-                name = name.substr(0, eq);
-                shown = "--" + name;
-            }
-            o = find_long(name);
-        } else if (a.size() == 2) {
-            o = find_short(a[1]);
-        } else if (a.size() > 2 && (o = find_short(a[1])) && o->kind != Kind::Flag) {
-            inline_value = a.substr(2);  // -oOUT
-            shown = a.substr(0, 2);
-        } else {
-            o = nullptr;
-        }
-        if (!o) return usage_error("unknown option '" + shown + "'");
-        if (o->kind == Kind::Flag) {
-            if (inline_value) return usage_error(shown + " takes no value");
-            values_[o->name].push_back("1");
-        } else {
-            std::string v;
-            if (inline_value) {
-                v = *inline_value;
-            } else {
-                if (i + 1 >= argc) return usage_error(shown + " needs a value (" + o->metavar + ")");
-                v = argv[++i];
-            }
-            values_[o->name].push_back(v);
-        }
-    }
-    if (has("help")) {
+    try {
+        impl_->app.parse(argc, argv);
+    } catch (const CLI::CallForHelp&) {
         std::fputs(help_text().c_str(), stdout);
         return 0;
+    } catch (const CLI::ParseError& e) {
+        return usage_error(e.what());
     }
-    size_t k = 0;
-    for (const auto& p : pos_) {
-        if (p.variadic) {
-            for (; k < positionals.size(); ++k) pos_values_[p.name].push_back(positionals[k]);
-            if (p.required && pos_values_[p.name].empty()) return usage_error("missing " + p.name);
-            continue;
-        }
-        if (k < positionals.size()) {
-            pos_values_[p.name].push_back(positionals[k++]);
-        } else if (p.required) {
-            return usage_error("missing " + p.name);
+    for (const auto& o : impl_->opts) {
+        if (o.kind == Impl::Kind::Flag) {
+            for (size_t i = 0; i < o.cli->count(); ++i) values_[o.name].push_back("1");
+        } else if (!o.cli->results().empty()) {
+            values_[o.name] = o.cli->results();
         }
     }
-    if (k < positionals.size()) return usage_error("unexpected argument '" + positionals[k] + "'");
+    for (const auto& p : impl_->pos)
+        if (!p.cli->results().empty()) pos_values_[p.name] = p.cli->results();
     return -1;
 }
 
@@ -137,8 +200,8 @@ bool Args::has(const std::string& name) const {
 std::string Args::get(const std::string& name) const {
     auto it = values_.find(name);
     if (it != values_.end() && !it->second.empty()) return it->second.back();
-    const Opt* o = find_long(name);
-    return o ? o->def : std::string();
+    auto d = defaults_.find(name);
+    return d == defaults_.end() ? std::string() : d->second;
 }
 
 std::vector<std::string> Args::all(const std::string& name) const {
@@ -188,50 +251,6 @@ bool Args::get_double(const std::string& name, double& out) const {
     return true;
 }
 
-std::string Args::help_text() const {
-    std::string h = "spt " + command_ + ": " + summary_ + "\n\nusage: " + usage_ + "\n";
-    auto wrap_line = [&](std::string left, const std::string& text) {
-        if (left.size() < 26) left.resize(26, ' ');
-        else left += "\n" + std::string(26, ' ');
-        // Wrap the help text at ~100 columns, continuing under the text column.
-        std::string out;
-        size_t col = 26;
-        size_t p = 0;
-        while (p < text.size()) {
-            size_t sp = text.find(' ', p);
-            if (sp == std::string::npos) sp = text.size();
-            std::string word = text.substr(p, sp - p);
-            if (col + word.size() > 100 && col > 26) {
-                out += "\n" + std::string(26, ' ');
-                col = 26;
-            }
-            out += word;
-            col += word.size();
-            if (sp < text.size()) {
-                out += ' ';
-                ++col;
-            }
-            p = sp + 1;
-        }
-        h += "  " + left + out + "\n";
-    };
-    if (!pos_.empty()) {
-        h += "\narguments:\n";
-        for (const auto& p : pos_)
-            wrap_line(p.name + (p.variadic ? "..." : ""), p.help + (p.required ? "" : " (optional)"));
-    }
-    h += "\noptions:\n";
-    for (const auto& o : opts_) {
-        std::string left = o.short_name ? std::string("-") + o.short_name + ", " : std::string("    ");
-        left += "--" + o.name;
-        if (o.kind != Kind::Flag) left += " " + o.metavar;
-        std::string text = o.help;
-        if (!o.def.empty()) text += " (default: " + o.def + ")";
-        if (o.kind == Kind::Multi) text += " (repeatable)";
-        wrap_line(left, text);
-    }
-    if (!epilog_.empty()) h += "\n" + epilog_ + (epilog_.back() == '\n' ? "" : "\n");
-    return h;
-}
+std::string Args::help_text() const { return impl_->app.help(); }
 
 }  // namespace spt::cli

@@ -1,7 +1,7 @@
-// A small command-line parser shared by the spt sub-commands, so every command accepts the
-// same forms and prints the same kind of help and errors:
-//   --name value, --name=value, -n value (short alias), flags (--name), repeatable options,
-//   positional arguments, "--" ends the options. Unknown options are errors (exit code 2).
+// The command-line layer every spt sub-command shares, on CLI11: the same forms everywhere
+// (--name value, --name=value, -n value, -nVALUE, flags, repeatable options, positionals, "--"
+// ends the options), help generated from the declarations, unknown options and malformed
+// values exit 2. This class only keeps spt's conventions (messages, exit codes, typed getters).
 //
 //   Args a("render", "render a .spt file to images", "spt render FILE.spt -o OUT [options]");
 //   a.positional("FILE.spt", "the file to render");
@@ -12,7 +12,7 @@
 #pragma once
 
 #include <map>
-#include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +22,9 @@ class Args {
 public:
     // `command` is the sub-command name ("render"); `usage` the synopsis line.
     Args(std::string command, std::string summary, std::string usage);
+    ~Args();
+    Args(const Args&) = delete;
+    Args& operator=(const Args&) = delete;
 
     // Declarations. `metavar` names the value in help ("N", "FILE"). `def` is shown in help
     // and returned by get() when the option is absent.
@@ -34,6 +37,8 @@ public:
     // must come after the required ones.
     Args& positional(const std::string& name, const std::string& help, bool required = true,
                      bool variadic = false);
+    // Options declared after this call are listed under `title` in --help.
+    Args& group(const std::string& title);
     // Free text printed after the options in --help (key lists, examples).
     Args& epilog(const std::string& text);
 
@@ -60,24 +65,12 @@ public:
     const std::string& command() const { return command_; }
 
 private:
-    enum class Kind { Flag, Option, Multi };
-    struct Opt {
-        std::string name, metavar, help, def;
-        char short_name = 0;
-        Kind kind = Kind::Flag;
-    };
-    struct Pos {
-        std::string name, help;
-        bool required = true, variadic = false;
-    };
-    const Opt* find_long(const std::string& name) const;
-    const Opt* find_short(char c) const;
-
-    std::string command_, summary_, usage_, epilog_;
-    std::vector<Opt> opts_;
-    std::vector<Pos> pos_;
+    struct Impl;  // the CLI11 app (kept out of this header: CLI11 is a heavy include)
+    std::unique_ptr<Impl> impl_;
+    std::string command_;
     std::map<std::string, std::vector<std::string>> values_;
     std::map<std::string, std::vector<std::string>> pos_values_;
+    std::map<std::string, std::string> defaults_;
 };
 
 }  // namespace spt::cli

@@ -220,14 +220,7 @@ int paint_still(const PaintCommandOptions& o) {
 
 int cmd_paint(int argc, char** argv) {
     PaintCommandOptions o;
-    std::string err;
-    switch (parse_paint_options(argc, argv, o, err)) {
-        case ParseResult::Help: print_paint_help(stdout); return 0;
-        case ParseResult::Error:
-            std::fprintf(stderr, "spt paint: %s (see 'spt paint --help')\n", err.c_str());
-            return 2;
-        case ParseResult::Ok: break;
-    }
+    if (int rc = parse_paint_options(argc, argv, o); rc >= 0) return rc;
     std::error_code ec;
     if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
         return paint_sequence(o);

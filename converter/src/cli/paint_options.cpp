@@ -1,5 +1,7 @@
 #include "cli/paint_options.hpp"
 
+#include "cli/args.hpp"
+
 #include "io/roi_file.hpp"
 #include "paint/rate_control.hpp"
 
@@ -93,241 +95,178 @@ const char* orient_name(paint::OrientMode m) {
 
 }  // namespace
 
-void print_paint_help(std::FILE* f) {
-    std::fputs(
-        "usage: spt paint IN -o OUT.spt [options]\n"
-        "\n"
-        "Paints an image with brush strokes (the Stochastic Paintbrush Transformation): random\n"
-        "candidate strokes, coarse to fine, each kept only if it brings the painting closer to\n"
-        "the image. Writes the strokes to OUT.spt (written atomically: no half-written file).\n"
-        "\n"
-        "IN is any image OpenImageIO reads (PNG, JPEG, TIFF, EXR, ...). 8/16-bit files are taken\n"
-        "as sRGB; float files (EXR, float TIFF) as scene-linear Rec.709 and converted to sRGB with\n"
-        "OpenImageIO's colour management (\"linear\" -> \"sRGB\"). Alpha is composited over\n"
-        "--background.\n"
-        "\n"
-        "IN may also be an image sequence (shot.####.exr, shot.%04d.png, shot.1-120#.png, or a\n"
-        "folder of frames) or a video file (mp4, mov, mkv, avi, mpg, ...). Then OUT.spt holds\n"
-        "key frames (the first frame, the first after each detected cut, and at least every\n"
-        "--keyframe-interval frames) painted fully, and inter frames in which the strokes travel\n"
-        "with the optical flow and only the areas that changed are repainted.\n"
-        "\n"
-        "options:\n"
-        "  -o, --output FILE      the .spt file to write (required)\n"
-        "  --seed N               random seed (default 1); the same seed and options give the\n"
-        "                         same bytes whatever --threads\n"
-        "  --sets N               number of stroke sets, 3..10 (default 6), large to small,\n"
-        "                         sized from the canvas\n"
-        "  --set-sizes WxH,...    explicit set sizes in pixels, coarse to fine (overrides --sets)\n"
-        "  --max-strokes N        stop after N strokes (default 100000)\n"
-        "  --target-psnr DB       stop when the painting reaches DB dB PSNR (default: none)\n"
-        "  --threshold X          switch to the next smaller set when the relative error\n"
-        "                         improvement over a window (half a canvas coverage of the\n"
-        "                         set's strokes) drops below X (default 0.01)\n"
-        "  --lambda X             rate-distortion acceptance: a stroke must remove the error of\n"
-        "                         X average pixels (0 = any improvement); default 24, or\n"
-        "                         with --target-psnr 24 * 2^((28 - DB) / 4) in 8..64 (measured\n"
-        "                         best per target); it halves whenever the painting stalls\n"
-        "                         short of the target\n"
-        "  --temperature X        Metropolis temperature at the start of a set, relative to the\n"
-        "                         lambda cost (default 0.25; 0 = greedy)\n"
-        "  --templates DIR        use the grayscale images of DIR (name order, up to 1024x1024,\n"
-        "                         60x60 by convention) as stroke templates instead of the\n"
-        "                         built-in rectangle, soft round and ellipse (textured\n"
-        "                         brushes: converter/templates/brushes/)\n"
-        "  --roi x,y,w,h          a region of interest painted down to the finest set (the\n"
-        "                         finest set paints only there); repeatable\n"
-        "  --roi-file F           regions of interest from JSON:\n"
-        "                         {\"rois\":[{\"x\":..,\"y\":..,\"w\":..,\"h\":..}]}\n"
-        "  --orient MODE          stroke orientation: edges (default; follow the nearest\n"
-        "                         multiscale edge), gradient (local structure tensor), random\n"
-        "  --threads N            worker threads (default: all cores)\n"
-        "  --progress MODE        auto (a bar on a terminal), plain, json (one object per line\n"
-        "                         on stdout), none\n"
-        "  --preview FILE         also write the rendered painting (PNG, EXR, TIFF, ...)\n"
-        "  --side-by-side FILE    also write source | painting in one image\n"
-        "  --background R,G,B     canvas colour before any stroke (default 255,255,255)\n"
-        "  --stored               write stored (coding 0) frames instead of range-coded ones\n"
-        "  --coding 1|2           2 (default): code which of the painter's replayable random\n"
-        "                         candidates were accepted (SPEC.md 7.7); 1: explicit positions\n"
-        "  --color-step Q         choose colours on a lattice of step Q (1..32; default 12, or 4\n"
-        "                         with --target-psnr above 33) around the canvas under the\n"
-        "                         stroke: coding 2 spends fewer bits on them\n"
-        "  --target-bytes N[/s]   search lambda so that the file is at most N bytes (N/s: per\n"
-        "                         second of a clip); reports where it landed"
-        "\n"
-        "sequences and video:\n"
-        "  --frames A-B           paint only these frames (sequence numbers, or 0-based video\n"
-        "                         frames)\n"
-        "  --fps R                frame rate, e.g. 24 or 30000/1001 (default: the video's, or 24)\n"
-        "  --skip-bad-frames      repeat the previous frame for a missing or unreadable one\n"
-        "                         instead of stopping\n"
-        "  --keyframe-interval N  at most N frames from one key frame to the next (default 100)\n"
-        "  --cut-threshold X      cut when the pixel x edge difference exceeds X times its\n"
-        "                         recent average (default 6)\n"
-        "  --flow METHOD          optical flow: dis-ultrafast (default), dis-fast, dis-medium,\n"
-        "                         farneback\n"
-        "  --max-inter-strokes N  at most N new strokes per inter frame (default 4000)\n"
-        "  --motion-block N       motion block size in pixels, 8..256 (default 16)\n"
-        "  --flow-orientation     lay new strokes along the optical flow where the picture\n"
-        "                         moves (default: along the edges, as for key frames)\n"
-        "  --roi-file F           for video, each ROI may have \"frames\": \"A-B\"\n"
-        "  Ctrl-C / SIGTERM stops after the current frame and leaves a valid OUT.spt holding\n"
-        "  every finished frame.\n"
-        "\n"
-        "  -h, --help             this help\n"
-        "\n"
-        "exit status: 0 success, 1 failure (unreadable input, write error), 2 bad usage\n",
-        f);
+namespace {
+
+// The options of `spt paint`, declared once: CLI11 parses them and writes --help from them.
+void declare(Args& a) {
+    a.positional("IN", "an image, an image sequence (shot.####.exr, shot.%04d.png, shot.1-120#.png), a folder "
+                       "of frames, or a video file")
+        .option("output", "FILE", "the .spt file to write (required)", 'o')
+        .option("seed", "N", "random seed; the same seed and options give the same bytes whatever --threads", 0, "1")
+        .option("sets", "N", "number of stroke sets, 3..10, large to small, sized from the canvas", 0, "6")
+        .option("set-sizes", "WxH,...", "explicit set sizes in pixels, coarse to fine (overrides --sets)")
+        .option("max-strokes", "N", "stop after N strokes", 0, "100000")
+        .option("target-psnr", "DB", "stop when the painting reaches DB dB PSNR (default: none)")
+        .option("threshold", "X", "switch to the next smaller set when the relative error improvement over a "
+                                  "window (half a canvas coverage of the set's strokes) drops below X", 0, "0.01")
+        .option("lambda", "X", "rate-distortion acceptance: a stroke must remove the error of X average pixels "
+                               "(0 = any improvement); default 24, or with --target-psnr 24 * 2^((28 - DB) / 4) "
+                               "in 8..64 (measured best per target); it halves whenever the painting stalls short "
+                               "of the target")
+        .option("temperature", "X", "Metropolis temperature at the start of a set, relative to the lambda cost "
+                                    "(0 = greedy)", 0, "0.25")
+        .option("templates", "DIR", "use the grayscale images of DIR (name order, up to 1024x1024, 60x60 by "
+                                    "convention) as stroke templates instead of the built-in rectangle, soft round "
+                                    "and ellipse (textured brushes: converter/templates/brushes/)")
+        .multi("roi", "x,y,w,h", "a region of interest painted down to the finest set (the finest set paints only there)")
+        .option("roi-file", "F", "regions of interest from JSON: {\"rois\":[{\"x\":..,\"y\":..,\"w\":..,\"h\":..}]}; "
+                                 "for video, each ROI may have \"frames\": \"A-B\"")
+        .option("orient", "MODE", "stroke orientation: edges (follow the nearest multiscale edge), gradient "
+                                  "(local structure tensor), random", 0, "edges")
+        .option("threads", "N", "worker threads (default: all cores)")
+        .option("progress", "MODE", io::kProgressHelp, 0, "auto")
+        .option("preview", "FILE", "also write the rendered painting (PNG, EXR, TIFF, ...)")
+        .option("side-by-side", "FILE", "also write source | painting in one image")
+        .option("background", "R,G,B", "canvas colour before any stroke", 0, "255,255,255")
+        .flag("stored", "write stored (coding 0) frames instead of range-coded ones")
+        .option("coding", "1|2", "2: code which of the painter's replayable random candidates were accepted "
+                                 "(SPEC.md 7.7); 1: explicit positions", 0, "2")
+        .option("color-step", "Q", "choose colours on a lattice of step Q (1..32; default 12, or 4 with "
+                                   "--target-psnr above 33) around the canvas under the stroke: coding 2 spends "
+                                   "fewer bits on them")
+        .option("target-bytes", "N[/s]", "search lambda so that the file is at most N bytes (N/s: per second of a "
+                                         "clip); reports where it landed")
+        .group("sequences and video")
+        .option("frames", "A-B", "paint only these frames (sequence numbers, or 0-based video frames)")
+        .option("fps", "R", "frame rate, e.g. 24 or 30000/1001 (default: the video's, or 24)")
+        .flag("skip-bad-frames", "repeat the previous frame for a missing or unreadable one instead of stopping")
+        .option("keyframe-interval", "N", "at most N frames from one key frame to the next", 0, "100")
+        .option("cut-threshold", "X", "cut when the pixel x edge difference exceeds X times its recent average", 0, "6")
+        .option("flow", "METHOD", "optical flow: dis-ultrafast, dis-fast, dis-medium, farneback", 0, "dis-ultrafast")
+        .option("max-inter-strokes", "N", "at most N new strokes per inter frame", 0, "4000")
+        .option("motion-block", "N", "motion block size in pixels, 8..256", 0, "16")
+        .flag("flow-orientation", "lay new strokes along the optical flow where the picture moves (default: "
+                                  "along the edges, as for key frames)")
+        .epilog(
+            "Paints an image with brush strokes (the Stochastic Paintbrush Transformation): random\n"
+            "candidate strokes, coarse to fine, each kept only if it brings the painting closer to\n"
+            "the image. Writes the strokes to OUT.spt (written atomically: no half-written file).\n"
+            "\n"
+            "IN is any image OpenImageIO reads (PNG, JPEG, TIFF, EXR, ...). 8/16-bit files are taken\n"
+            "as sRGB; float files (EXR, float TIFF) as scene-linear Rec.709 and converted to sRGB with\n"
+            "OpenImageIO's colour management (\"linear\" -> \"sRGB\"). Alpha is composited over\n"
+            "--background.\n"
+            "\n"
+            "For an image sequence or a video, OUT.spt holds key frames (the first frame, the first\n"
+            "after each detected cut, and at least every --keyframe-interval frames) painted fully,\n"
+            "and inter frames in which the strokes travel with the optical flow and only the areas\n"
+            "that changed are repainted. Ctrl-C / SIGTERM stops after the current frame and leaves a\n"
+            "valid OUT.spt holding every finished frame.\n"
+            "\n"
+            "exit status: 0 success, 1 failure (unreadable input, write error), 2 bad usage\n");
 }
 
-ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, std::string& err) {
-    bool have_sets = false;
+}  // namespace
+
+int parse_paint_options(int argc, char** argv, PaintCommandOptions& o) {
+    Args a("paint", "paint an image, an image sequence or a video into a .spt file",
+           "spt paint IN -o OUT.spt [options]");
+    declare(a);
+    if (int rc = a.parse(argc, argv); rc >= 0) return rc;
+    auto bad = [&](const std::string& msg) { return a.usage_error(msg); };
+    auto v = [&](const char* name) { return a.get(name); };
+    o.input = a.pos("IN");
+    o.output = a.get("output");
+    long n = 0;
+    if (a.has("seed") && !parse_u64(v("seed"), o.paint.seed))
+        return bad("--seed: expected an unsigned integer, got '" + v("seed") + "'");
     // Defaults chosen by measurement (paint/rate_control.hpp rate_defaults, bench/rate_sweep.sh);
     // with --target-psnr they follow the target unless given.
-    bool have_lambda = false, have_step = false;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&](std::string& v) -> bool {
-            if (i + 1 >= argc) { err = "option " + a + " needs a value"; return false; }
-            v = argv[++i];
-            return true;
-        };
-        std::string v;
-        if (a == "-h" || a == "--help") return ParseResult::Help;
-        if (a == "-o" || a == "--output") {
-            if (!value(o.output)) return ParseResult::Error;
-        } else if (a == "--seed") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_u64(v, o.paint.seed)) { err = "--seed: expected an unsigned integer, got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--sets") {
-            long n;
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_int(v, 3, 10, n)) { err = "--sets: expected 3..10, got '" + v + "'"; return ParseResult::Error; }
-            o.sets = int(n);
-            have_sets = true;
-        } else if (a == "--set-sizes") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_set_sizes(v, o.set_sizes) || o.set_sizes.size() > 16) {
-                err = "--set-sizes: expected 1..16 sizes WxH (1..4096) separated by commas, got '" + v + "'";
-                return ParseResult::Error;
-            }
-        } else if (a == "--max-strokes") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_u64(v, o.paint.max_strokes) || o.paint.max_strokes == 0 || o.paint.max_strokes > (1u << 24)) {
-                err = "--max-strokes: expected 1..16777216, got '" + v + "'";
-                return ParseResult::Error;
-            }
-        } else if (a == "--target-psnr") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_double(v, 1, 99, o.paint.target_psnr)) { err = "--target-psnr: expected 1..99 dB, got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--threshold") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_double(v, 0, 1, o.paint.threshold)) { err = "--threshold: expected 0..1, got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--lambda") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_double(v, 0, 1e6, o.paint.lambda)) { err = "--lambda: expected a number >= 0, got '" + v + "'"; return ParseResult::Error; }
-            have_lambda = true;
-        } else if (a == "--temperature") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_double(v, 0, 1e3, o.paint.temperature)) { err = "--temperature: expected a number >= 0, got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--templates") {
-            if (!value(o.templates_dir)) return ParseResult::Error;
-        } else if (a == "--roi") {
-            if (!value(v)) return ParseResult::Error;
-            RoiSpec r;
-            if (!parse_rect(v, r.rect)) { err = "--roi: expected x,y,w,h (w, h > 0), got '" + v + "'"; return ParseResult::Error; }
-            o.rois.push_back(r);
-        } else if (a == "--roi-file") {
-            if (!value(o.roi_file)) return ParseResult::Error;
-        } else if (a == "--orient") {
-            if (!value(v)) return ParseResult::Error;
-            if (v == "edges") o.paint.orient = paint::OrientMode::Edges;
-            else if (v == "gradient") o.paint.orient = paint::OrientMode::Gradient;
-            else if (v == "random") o.paint.orient = paint::OrientMode::Random;
-            else { err = "--orient: expected edges, gradient or random, got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--threads") {
-            long n;
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_int(v, 1, 1024, n)) { err = "--threads: expected 1..1024, got '" + v + "'"; return ParseResult::Error; }
-            o.paint.threads = int(n);
-        } else if (a == "--progress") {
-            if (!value(v)) return ParseResult::Error;
-            if (!io::parse_progress_mode(v, o.progress)) { err = "--progress: expected auto, plain, json or none, got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--preview") {
-            if (!value(o.preview)) return ParseResult::Error;
-        } else if (a == "--side-by-side") {
-            if (!value(o.side_by_side)) return ParseResult::Error;
-        } else if (a == "--background") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_rgb(v, o.background)) { err = "--background: expected R,G,B (0..255), got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--stored") {
-            o.stored = true;
-        } else if (a == "--coding") {
-            if (!value(v)) return ParseResult::Error;
-            if (v != "1" && v != "2") { err = "--coding: expected 1 or 2, got '" + v + "'"; return ParseResult::Error; }
-            o.coding = v == "1" ? 1 : 2;
-        } else if (a == "--color-step") {
-            long n;
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_int(v, 1, 32, n)) { err = "--color-step: expected 1..32, got '" + v + "'"; return ParseResult::Error; }
-            o.paint.color_step = int(n);
-            have_step = true;
-        } else if (a == "--target-bytes") {
-            if (!value(v)) return ParseResult::Error;
-            std::string num = v;
-            o.target_bytes_per_second = num.size() > 2 && num.compare(num.size() - 2, 2, "/s") == 0;
-            if (o.target_bytes_per_second) num.resize(num.size() - 2);
-            if (!parse_u64(num, o.target_bytes) || o.target_bytes < 64) {
-                err = "--target-bytes: expected a size of at least 64 bytes, optionally /s, got '" + v + "'";
-                return ParseResult::Error;
-            }
-        } else if (a == "--frames") {
-            if (!value(o.frames)) return ParseResult::Error;
-        } else if (a == "--fps") {
-            if (!value(o.fps)) return ParseResult::Error;
-        } else if (a == "--skip-bad-frames") {
-            o.skip_bad_frames = true;
-        } else if (a == "--keyframe-interval") {
-            long n;
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_int(v, 1, 1000000, n)) { err = "--keyframe-interval: expected 1..1000000, got '" + v + "'"; return ParseResult::Error; }
-            o.keyframe_interval = int(n);
-        } else if (a == "--cut-threshold") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_double(v, 1, 1e6, o.cut_threshold)) { err = "--cut-threshold: expected a number >= 1, got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--flow") {
-            if (!value(o.flow)) return ParseResult::Error;
-        } else if (a == "--max-inter-strokes") {
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_u64(v, o.max_inter_strokes) || o.max_inter_strokes > (1u << 24)) { err = "--max-inter-strokes: expected 0..16777216, got '" + v + "'"; return ParseResult::Error; }
-        } else if (a == "--flow-orientation") {
-            o.flow_orientation = true;
-        } else if (a == "--motion-block") {
-            long n;
-            if (!value(v)) return ParseResult::Error;
-            if (!parse_int(v, 8, 256, n)) { err = "--motion-block: expected 8..256, got '" + v + "'"; return ParseResult::Error; }
-            o.block_size = int(n);
-        } else if (a.size() > 1 && a[0] == '-') {
-            err = "unknown option " + a;
-            return ParseResult::Error;
-        } else if (o.input.empty()) {
-            o.input = a;
-        } else {
-            err = "more than one input ('" + o.input + "' and '" + a + "')";
-            return ParseResult::Error;
-        }
+    const bool have_sets = a.has("sets"), have_lambda = a.has("lambda"), have_step = a.has("color-step");
+    if (have_sets) {
+        if (!parse_int(v("sets"), 3, 10, n)) return bad("--sets: expected 3..10, got '" + v("sets") + "'");
+        o.sets = int(n);
+    }
+    if (a.has("set-sizes") && (!parse_set_sizes(v("set-sizes"), o.set_sizes) || o.set_sizes.size() > 16))
+        return bad("--set-sizes: expected 1..16 sizes WxH (1..4096) separated by commas, got '" + v("set-sizes") + "'");
+    if (a.has("max-strokes") && (!parse_u64(v("max-strokes"), o.paint.max_strokes) || o.paint.max_strokes == 0 ||
+                                 o.paint.max_strokes > (1u << 24)))
+        return bad("--max-strokes: expected 1..16777216, got '" + v("max-strokes") + "'");
+    if (a.has("target-psnr") && !parse_double(v("target-psnr"), 1, 99, o.paint.target_psnr))
+        return bad("--target-psnr: expected 1..99 dB, got '" + v("target-psnr") + "'");
+    if (a.has("threshold") && !parse_double(v("threshold"), 0, 1, o.paint.threshold))
+        return bad("--threshold: expected 0..1, got '" + v("threshold") + "'");
+    if (have_lambda && !parse_double(v("lambda"), 0, 1e6, o.paint.lambda))
+        return bad("--lambda: expected a number >= 0, got '" + v("lambda") + "'");
+    if (a.has("temperature") && !parse_double(v("temperature"), 0, 1e3, o.paint.temperature))
+        return bad("--temperature: expected a number >= 0, got '" + v("temperature") + "'");
+    o.templates_dir = v("templates");
+    for (const std::string& r : a.all("roi")) {
+        RoiSpec spec;
+        if (!parse_rect(r, spec.rect)) return bad("--roi: expected x,y,w,h (w, h > 0), got '" + r + "'");
+        o.rois.push_back(spec);
+    }
+    o.roi_file = v("roi-file");
+    if (a.has("orient")) {
+        const std::string m = v("orient");
+        if (m == "edges") o.paint.orient = paint::OrientMode::Edges;
+        else if (m == "gradient") o.paint.orient = paint::OrientMode::Gradient;
+        else if (m == "random") o.paint.orient = paint::OrientMode::Random;
+        else return bad("--orient: expected edges, gradient or random, got '" + m + "'");
+    }
+    if (a.has("threads")) {
+        if (!parse_int(v("threads"), 1, 1024, n)) return bad("--threads: expected 1..1024, got '" + v("threads") + "'");
+        o.paint.threads = int(n);
+    }
+    if (!io::parse_progress_mode(v("progress"), o.progress))
+        return bad("--progress: expected auto, plain, json or none, got '" + v("progress") + "'");
+    o.preview = v("preview");
+    o.side_by_side = v("side-by-side");
+    if (a.has("background") && !parse_rgb(v("background"), o.background))
+        return bad("--background: expected R,G,B (0..255), got '" + v("background") + "'");
+    o.stored = a.has("stored");
+    if (a.has("coding")) {
+        if (v("coding") != "1" && v("coding") != "2") return bad("--coding: expected 1 or 2, got '" + v("coding") + "'");
+        o.coding = v("coding") == "1" ? 1 : 2;
+    }
+    if (have_step) {
+        if (!parse_int(v("color-step"), 1, 32, n)) return bad("--color-step: expected 1..32, got '" + v("color-step") + "'");
+        o.paint.color_step = int(n);
+    }
+    if (a.has("target-bytes")) {
+        std::string num = v("target-bytes");
+        o.target_bytes_per_second = num.size() > 2 && num.compare(num.size() - 2, 2, "/s") == 0;
+        if (o.target_bytes_per_second) num.resize(num.size() - 2);
+        if (!parse_u64(num, o.target_bytes) || o.target_bytes < 64)
+            return bad("--target-bytes: expected a size of at least 64 bytes, optionally /s, got '" + v("target-bytes") + "'");
+    }
+    o.frames = v("frames");
+    o.fps = v("fps");
+    o.skip_bad_frames = a.has("skip-bad-frames");
+    if (a.has("keyframe-interval")) {
+        if (!parse_int(v("keyframe-interval"), 1, 1000000, n))
+            return bad("--keyframe-interval: expected 1..1000000, got '" + v("keyframe-interval") + "'");
+        o.keyframe_interval = int(n);
+    }
+    if (a.has("cut-threshold") && !parse_double(v("cut-threshold"), 1, 1e6, o.cut_threshold))
+        return bad("--cut-threshold: expected a number >= 1, got '" + v("cut-threshold") + "'");
+    o.flow = v("flow");
+    if (a.has("max-inter-strokes") && (!parse_u64(v("max-inter-strokes"), o.max_inter_strokes) || o.max_inter_strokes > (1u << 24)))
+        return bad("--max-inter-strokes: expected 0..16777216, got '" + v("max-inter-strokes") + "'");
+    o.flow_orientation = a.has("flow-orientation");
+    if (a.has("motion-block")) {
+        if (!parse_int(v("motion-block"), 8, 256, n)) return bad("--motion-block: expected 8..256, got '" + v("motion-block") + "'");
+        o.block_size = int(n);
     }
     const paint::RateDefaults rd = paint::rate_defaults(o.paint.target_psnr);
     if (!have_lambda) o.paint.lambda = rd.lambda;
     if (!have_step) o.paint.color_step = rd.color_step;
-    if (o.input.empty()) { err = "no input image given"; return ParseResult::Error; }
-    if (o.output.empty()) { err = "no output given (-o OUT.spt)"; return ParseResult::Error; }
-    if (have_sets && !o.set_sizes.empty()) { err = "give --sets or --set-sizes, not both"; return ParseResult::Error; }
+    if (o.output.empty()) return bad("no output given (-o OUT.spt)");
+    if (have_sets && !o.set_sizes.empty()) return bad("give --sets or --set-sizes, not both");
     o.cli_roi_count = o.rois.size();
     if (!o.roi_file.empty()) {
         auto r = io::read_roi_file(o.roi_file);
-        if (!r) { err = "--roi-file " + r.error().message; return ParseResult::Error; }
+        if (!r) return bad("--roi-file " + r.error().message);
         for (const io::RoiRange& f : *r) {
             RoiSpec s;
             s.first_frame = f.first_frame;
@@ -336,7 +275,7 @@ ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& o, s
             o.rois.push_back(s);
         }
     }
-    return ParseResult::Ok;
+    return -1;
 }
 
 std::string PaintCommandOptions::canonical() const {

@@ -55,10 +55,9 @@ struct PaintCommandOptions {
     std::string canonical() const;
 };
 
-enum class ParseResult { Ok, Help, Error };
-
-// Parses argv (argv[0] is the command name). On Error, `err` says what is wrong.
-ParseResult parse_paint_options(int argc, char** argv, PaintCommandOptions& out, std::string& err);
-void print_paint_help(std::FILE* f);
+// Parses argv (argv[0] is the command name) with the shared command-line layer (args.hpp).
+// Returns -1 when the command should run; otherwise the exit code to return at once: 0 after
+// --help, 2 after a usage error (printed to stderr).
+int parse_paint_options(int argc, char** argv, PaintCommandOptions& out);
 
 }  // namespace spt::cli
