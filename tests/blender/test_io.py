@@ -1,4 +1,5 @@
-"""Unit tests of the add-on's bpy-free file layer (python3 -m unittest, no Blender needed)."""
+"""Unit tests of the add-on's bpy-free file layer (python3 -m unittest, no Blender needed): the
+vectorised code the add-on ships against the one-tuple-per-stroke oracle in reference/."""
 
 import os
 import random
@@ -10,17 +11,17 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import spt_samples  # noqa: E402  (puts blender_addon on sys.path)
 
-from spt_grease_pencil.io import colors, geometry, stream_json  # noqa: E402
+import numpy as np  # noqa: E402
+from reference import ref_geometry as geometry  # noqa: E402
+from reference import ref_reader, ref_writer  # noqa: E402
+from reference.ref_reader import apply_frames  # noqa: E402
+from reference.ref_writer import frames_from_lists  # noqa: E402
+from spt_grease_pencil.io import colors, state_np, stream_json, strokes_np  # noqa: E402
+from spt_grease_pencil.io import geometry as geometry_np  # noqa: E402  (the vectorised one)
 from spt_grease_pencil.io.model import AFFINE, CURVE, INTER, KEY, POLYGON, STAMP, Frame, SptError, NeedsPack  # noqa: E402
-from spt_grease_pencil.io.reader import apply_frames, read_bytes, read_file  # noqa: E402
-from spt_grease_pencil.io.writer import frames_from_lists, write_stored  # noqa: E402
+from spt_grease_pencil.io.reader import read_bytes, read_file  # noqa: E402
+from spt_grease_pencil.io.writer import write_stored  # noqa: E402
 from spt_grease_pencil.io.model import Limits  # noqa: E402
-
-try:
-    import numpy as np
-    from spt_grease_pencil.io import geometry_np, state_np, strokes_np
-except ImportError:  # numpy is optional for the file layer (Blender's Python has it)
-    np = None
 
 
 def read_all(p):
@@ -48,7 +49,7 @@ class RoundTrip(Tmp):
         inf, frames = spt_samples.animation(frames=5)
         p = self.path("a.spt")
         write_stored(p, inf, frames)
-        f = read_file(p)
+        f = ref_reader.read_file(p)
         self.assertTrue(f.complete)
         inf.header.frame_count = 5
         self.assertEqual(f.info.header, inf.header)
@@ -121,7 +122,6 @@ class Colors(unittest.TestCase):
         self.assertEqual(colors.to_code(-1.0), 0)
         self.assertEqual(colors.to_code(colors.srgb_to_linear(0.5)), round(0.5 * 255))
 
-    @unittest.skipIf(np is None, "numpy not installed")
     def test_numpy_bounds_agree(self):
         b = np.array(colors.BOUNDS)
         lin = np.array([f32(colors.to_linear(k)) for k in range(256)], dtype=np.float32)
@@ -188,7 +188,6 @@ class Geometry(unittest.TestCase):
         pts = [(f32(x / 1000.0) * 1000.0, f32(y / 1000.0) * 1000.0, f32(w)) for x, y, w in geometry.curve_points(s)]
         self.assertEqual(geometry.points_to_curve(pts, (1, 2, 3, 200)), s)
 
-    @unittest.skipIf(np is None, "numpy not installed")
     def test_numpy_agrees_with_reference(self):
         strokes = [spt_samples.random_stamp(self.rng, self.inf) if i % 3 else spt_samples.random_affine(self.rng, self.inf)
                    for i in range(2000)]
@@ -274,7 +273,6 @@ class BadFiles(Tmp):
                 pass
 
 
-@unittest.skipIf(np is None, "numpy not installed")
 class Columnar(Tmp):
     """The numpy fast path (strokes_np, state_np) against the tuple reference, same files."""
 
@@ -288,7 +286,7 @@ class Columnar(Tmp):
         for kw in ({"frames": 6}, {"frames": 5, "motion": False}, {"frames": 3, "curves": 0, "affines": 0},
                    {"frames": 6, "polygons": 4}, {"frames": 4, "polygons": 2, "motion": False}):
             p = self.sample(**kw)
-            ref = list(read_file(p).live_lists())
+            ref = list(ref_reader.read_file(p).live_lists())
             f = read_file(p, columnar=True)
             got = [t.to_tuples() for t in f.live_lists()]
             self.assertEqual(got, ref)
@@ -332,7 +330,7 @@ class Columnar(Tmp):
     def test_frame_coding_agrees_with_reference(self):
         for motion, polygons in ((True, 0), (False, 0), (True, 3), (False, 3)):
             p = self.sample(frames=6, motion=motion, polygons=polygons)
-            ref_lists = list(read_file(p).live_lists())
+            ref_lists = list(ref_reader.read_file(p).live_lists())
             f = read_file(p, columnar=True)
             tables = list(f.live_lists())
             got = state_np.frames_from_tables(tables, f.curves)
@@ -433,14 +431,30 @@ class Columnar(Tmp):
                 struct.pack_into("<I", d, pos + 8 + ln, zlib.crc32(bytes(d[pos + 4:pos + 8 + ln])) & 0xFFFFFFFF)
                 pos += 12 + ln
             outcome = []
-            for columnar in (False, True):
+            for read in (ref_reader.read_bytes, lambda b, n: read_bytes(b, n, columnar=True)):
                 try:
-                    f = read_bytes(bytes(d), "x.spt", columnar=columnar)
-                    ls = list(f.live_lists())
-                    outcome.append([t.to_tuples() for t in ls] if columnar else ls)
+                    ls = list(read(bytes(d), "x.spt").live_lists())
+                    outcome.append([t.to_tuples() if hasattr(t, "to_tuples") else t for t in ls])
                 except SptError:
                     outcome.append("error")
             self.assertEqual(outcome[0], outcome[1])
+
+
+class RecordBytes(unittest.TestCase):
+    def test_packing_agrees_with_the_oracle(self):
+        for kw in ({"frames": 3}, {"frames": 3, "polygons": 4}):
+            inf, frames = spt_samples.animation(**kw)
+            for ls in apply_frames(inf.header, frames, Limits()):
+                self.assertEqual(strokes_np.StrokeTable.from_tuples(ls).record_bytes(), ref_writer.strokes_bytes(ls))
+
+    def test_add_on_frame_coder_agrees_with_the_oracle(self):
+        from spt_grease_pencil.io.writer import frames_from_lists as coder
+        inf, frames = spt_samples.animation(frames=6, motion=False)
+        lists = list(apply_frames(inf.header, frames, Limits()))
+        got, want = coder(lists), frames_from_lists(lists)
+        self.assertEqual([(f.type, list(f.removed), f.added.to_tuples() if hasattr(f.added, "to_tuples") else f.added)
+                          for f in got],
+                         [(f.type, list(f.removed), list(f.added)) for f in want])
 
 
 class StreamJson(unittest.TestCase):

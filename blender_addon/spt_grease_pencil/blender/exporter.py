@@ -17,7 +17,7 @@ import time
 
 import numpy as np
 
-from ..io import colors, geometry_np, state_np, stream_json
+from ..io import colors, geometry, state_np, stream_json
 from ..io.geometry import points_to_curve
 from ..io.model import MAX_POS, POLYGON
 from ..io.model import Header, SptError, StreamInfo, default_orientations
@@ -106,7 +106,7 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
         fc = d.fill[q].astype(np.float64)
         rgb = base[:, :3] * (1.0 - fc[:, 3:4]) + fc[:, :3] * fc[:, 3:4]
         rgba = np.concatenate([linear_to_codes(rgb), d.alpha[q, None]], axis=1)
-        qrows, valid = geometry_np.quads_to_rows(corners, t[q], rgba, h.sets, h.orientations, d.set_hint[q])
+        qrows, valid = geometry.quads_to_rows(corners, t[q], rgba, h.sets, h.orientations, d.set_hint[q])
         rows[q] = qrows
         keep[q[~valid]] = False
         if not valid.all():

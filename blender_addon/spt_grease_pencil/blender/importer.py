@@ -12,7 +12,7 @@ import time
 
 import numpy as np
 
-from ..io import colors, geometry_np, stream_json
+from ..io import colors, geometry, stream_json
 from ..io.model import AFFINE, CURVE, POLYGON, STAMP, NeedsPack, SptError
 from ..io.reader import read_file
 from ..io.strokes_np import A, B, CURVE_ID, GRID, KIND, R, SET, TMPL, X, Y
@@ -226,7 +226,7 @@ def frame_batch(table, idx, h, material, fill) -> StrokeBatch:
     vcol = np.zeros((m, 4), dtype=np.float32)
     if quad.any():
         q = np.flatnonzero(quad)
-        c = geometry_np.table_corners(rows[q], h.sets, h.orientations)
+        c = geometry.table_corners(rows[q], h.sets, h.orientations)
         xy[point_index(off[q], counts[q])] = c.reshape(-1, 2)
     if is_poly.any():
         p = np.flatnonzero(is_poly)

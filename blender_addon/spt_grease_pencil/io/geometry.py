@@ -1,4 +1,4 @@
-"""Strokes <-> Grease Pencil shapes, in pixel units (standard library reference version).
+"""Strokes <-> Grease Pencil shapes, in pixel units, vectorised with numpy (millions of strokes).
 
 A stamp or affine stroke becomes a quad: the images of the template corners
 (u, v) = (-1,-1), (1,-1), (1,1), (-1,1) in pixel coordinates (x right, y down). Stamps are
@@ -10,123 +10,153 @@ bit-exact.
 Stamp geometry (same convention as libspt): the template is scaled to the set's w x h and rotated
 by the table entry (cos, sin): u axis = (w/2)(cos, sin), v axis = (h/2)(-sin, cos).
 
-geometry_np.py holds the same maps vectorised with numpy for the Blender layer; the unit tests
-check both agree.
-"""
+tests/blender/reference/ref_geometry.py is the one-stroke-at-a-time oracle these maps are tested
+against."""
 
-import math
-from typing import List, Optional, Sequence, Tuple
+import numpy as np
 
 from .model import AFFINE, MAX_MATRIX, MAX_POS, STAMP
+from .strokes_np import A, KIND, MA, MB, MC, MD, NCOL, ORIENT, R, SET, TMPL, X, Y, StrokeTable
 
 CORNERS_UV = ((-1, -1), (1, -1), (1, 1), (-1, 1))
-# uv_fill of the corners: template row 0 (v = -1) is the image's top row (Blender v = 1).
-UV_FILL = (0.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0)
-
 # How far (in pixels) a quad's axes may be from a stamp's to still count as that stamp.
 STAMP_TOLERANCE_PX = 0.02
+_CUV = np.array(CORNERS_UV, dtype=np.float64)  # (4, 2)
 
 
-def stamp_axes(w: int, h: int, cos_q14: int, sin_q14: int):
-    c, s = cos_q14 / 16384.0, sin_q14 / 16384.0
-    return (0.5 * w * c, 0.5 * w * s), (-0.5 * h * s, 0.5 * h * c)
+def stamp_axes_table(sets, orients):
+    """(S, O, 2, 2) array: [set, orient] -> (u axis, v axis) in pixels."""
+    wh = np.asarray(sets, dtype=np.float64).reshape(-1, 2)
+    cs = np.asarray(orients, dtype=np.float64).reshape(-1, 2) / 16384.0
+    c, s = cs[:, 0][None, :], cs[:, 1][None, :]
+    w, h = wh[:, 0][:, None], wh[:, 1][:, None]
+    ua = np.stack([0.5 * w * c, 0.5 * w * s], axis=-1)
+    va = np.stack([-0.5 * h * s, 0.5 * h * c], axis=-1)
+    return np.stack([ua, va], axis=-2)
 
 
-def stroke_frame(stroke, sets, orients):
-    """(centre, u axis, v axis) of a stamp or affine stroke in pixels."""
-    if stroke[0] == STAMP:
-        w, h = sets[stroke[1]]
-        c, s = orients[stroke[3]]
-        ua, va = stamp_axes(w, h, c, s)
-        return (stroke[4] / 16.0, stroke[5] / 16.0), ua, va
-    _, _t, tx, ty, a, b, c, d = stroke[:8]
-    return (tx / 16.0, ty / 16.0), (a / 16.0, c / 16.0), (b / 16.0, d / 16.0)
+def corners_from_frames(centre, ua, va):
+    """(N, 4, 2) corners from (N, 2) centres and axes."""
+    return centre[:, None, :] + _CUV[None, :, 0:1] * ua[:, None, :] + _CUV[None, :, 1:2] * va[:, None, :]
 
 
-def quad_corners(stroke, sets, orients) -> List[Tuple[float, float]]:
-    (cx, cy), (ux, uy), (vx, vy) = stroke_frame(stroke, sets, orients)
-    return [(cx + u * ux + v * vx, cy + u * uy + v * vy) for (u, v) in CORNERS_UV]
+def stamps_to_corners(stamps, sets, orients):
+    """stamps: (N, 10) int array of stamp tuples. Returns (N, 4, 2) pixel corners."""
+    st = np.asarray(stamps, dtype=np.int64).reshape(-1, 10)
+    table = stamp_axes_table(sets, orients)
+    axes = table[st[:, 1], st[:, 3]]  # (N, 2, 2)
+    centre = st[:, 4:6].astype(np.float64) / 16.0
+    return corners_from_frames(centre, axes[:, 0], axes[:, 1])
 
 
-def quad_frame(corners: Sequence[Tuple[float, float]]):
-    """Centre and axes of a quad; averages opposite edges so a slightly skewed quad still works."""
-    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = corners
-    cx, cy = (x0 + x1 + x2 + x3) / 4.0, (y0 + y1 + y2 + y3) / 4.0
-    ux, uy = ((x1 - x0) + (x2 - x3)) / 4.0, ((y1 - y0) + (y2 - y3)) / 4.0
-    vx, vy = ((x3 - x0) + (x2 - x1)) / 4.0, ((y3 - y0) + (y2 - y1)) / 4.0
-    return (cx, cy), (ux, uy), (vx, vy)
+def affines_to_corners(affines):
+    """affines: (N, 12) int array of affine tuples. Returns (N, 4, 2) pixel corners."""
+    af = np.asarray(affines, dtype=np.int64).reshape(-1, 12).astype(np.float64) / 16.0
+    centre = af[:, 2:4]
+    ua = np.stack([af[:, 4], af[:, 6]], axis=-1)
+    va = np.stack([af[:, 5], af[:, 7]], axis=-1)
+    return corners_from_frames(centre, ua, va)
 
 
-def match_stamp(ua, va, sets, orients, set_hint: Optional[int] = None):
-    """(set, orient) of the stamp whose axes are `ua`, `va`, or None."""
-    tol = STAMP_TOLERANCE_PX
-    order = list(range(len(sets)))
-    if set_hint is not None and 0 <= set_hint < len(sets):
-        order.remove(set_hint)
-        order.insert(0, set_hint)
-    for si in order:
-        w, h = sets[si]
-        for oi, (c, s) in enumerate(orients):
-            (eux, euy), (evx, evy) = stamp_axes(w, h, c, s)
-            if abs(ua[0] - eux) <= tol and abs(ua[1] - euy) <= tol and \
-                    abs(va[0] - evx) <= tol and abs(va[1] - evy) <= tol:
-                return si, oi
-    return None
+def _q4(v):
+    return np.floor(v * 16.0 + 0.5).astype(np.int64)
 
 
-def _q4(v: float) -> int:
-    return int(math.floor(v * 16.0 + 0.5))
+def table_corners(rows, sets, orients):
+    """(N, 4, 2) pixel corners of the stamp and affine rows of a StrokeTable (curve rows: 0)."""
+    r = np.asarray(rows)
+    table = stamp_axes_table(sets, orients)
+    is_stamp = r[:, KIND] == STAMP
+    si = np.where(is_stamp, r[:, SET], 0)
+    oi = np.where(is_stamp, r[:, ORIENT], 0)
+    axes = table[si, oi]  # (N, 2, 2)
+    m = r[:, MA:MD + 1].astype(np.float64) / 16.0  # a b c d
+    ua = np.where(is_stamp[:, None], axes[:, 0], np.stack([m[:, 0], m[:, 2]], axis=-1))
+    va = np.where(is_stamp[:, None], axes[:, 1], np.stack([m[:, 1], m[:, 3]], axis=-1))
+    centre = r[:, X:Y + 1].astype(np.float64) / 16.0
+    return corners_from_frames(centre, ua, va)
 
 
-def quad_to_stroke(corners, template: int, rgba, sets, orients, set_hint=None):
-    """The stroke a quad stands for: a stamp when it matches one of its set size and a table
-    orientation, otherwise an affine stroke. None when it cannot be one (degenerate or out of
-    the format's ranges)."""
-    (cx, cy), ua, va = quad_frame(corners)
-    x, y = _q4(cx), _q4(cy)
-    if abs(x) > MAX_POS or abs(y) > MAX_POS:
-        return None
-    m = match_stamp(ua, va, sets, orients, set_hint)
-    if m is not None:
-        return (STAMP, m[0], template, m[1], x, y) + tuple(rgba)
-    a, c, b, d = _q4(ua[0]), _q4(ua[1]), _q4(va[0]), _q4(va[1])
-    if max(abs(a), abs(b), abs(c), abs(d)) > MAX_MATRIX or a * d - b * c == 0:
-        return None
-    return (AFFINE, template, x, y, a, b, c, d) + tuple(rgba)
+def match_stamps(ua, va, sets, orients, set_hint=None):
+    """Per quad, set * O + orient of the stamp whose axes are ua, va (N, 2) within the tolerance,
+    or -1: the hinted set first when it matches, else the first match in (set, orient) order
+    (geometry.match_stamp). The hinted set is tried alone first (N x O work); only the quads it
+    does not explain (edited or affine strokes: few) are compared with every (set, orient)."""
+    table = stamp_axes_table(sets, orients)  # (S, O, 2, 2)
+    S, O = table.shape[0], table.shape[1]
+    flat = table.reshape(S, O, 4)
+    mine = np.concatenate([ua, va], axis=1)  # (N, 4)
+    n = mine.shape[0]
+    first = np.full(n, -1, dtype=np.int64)
+    todo = np.arange(n)
+    if set_hint is not None:
+        hint = np.asarray(set_hint, dtype=np.int64).reshape(-1)
+        valid = (hint >= 0) & (hint < S)
+        hint_c = np.clip(hint, 0, S - 1)
+        ok = (np.abs(mine[:, None, :] - flat[hint_c]) <= STAMP_TOLERANCE_PX).all(axis=2)  # (N, O)
+        hit = valid & ok.any(axis=1)
+        first[hit] = hint_c[hit] * O + ok[hit].argmax(axis=1)
+        todo = np.flatnonzero(~hit)
+    step = 4096  # bounds the temporary (step x S*O x 4) array
+    flat2 = flat.reshape(S * O, 4)
+    for i in range(0, todo.shape[0], step):
+        sel = todo[i:i + step]
+        ok = (np.abs(mine[sel, None, :] - flat2[None, :, :]) <= STAMP_TOLERANCE_PX).all(axis=2)
+        first[sel] = np.where(ok.any(axis=1), ok.argmax(axis=1), -1)
+    return first
 
 
-def curve_points(stroke) -> List[Tuple[float, float, float]]:
-    """(x px, y px, width px) per point of a curve stroke."""
-    return [(x / 16.0, y / 16.0, w / 16.0) for (x, y, w) in stroke[5]]
+def quads_to_rows(corners, templates, rgba, sets, orients, set_hint=None):
+    """Vectorised geometry.quad_to_stroke into StrokeTable rows. corners (N, 4, 2) pixels,
+    templates (N,), rgba (N, 4) ints, set_hint (N,) or None. Returns (rows (N, NCOL) int32,
+    valid (N,) bool); invalid rows (degenerate or out of range) are to be left out."""
+    q = np.asarray(corners, dtype=np.float64).reshape(-1, 4, 2)
+    n = q.shape[0]
+    rows = np.zeros((n, NCOL), dtype=np.int32)
+    if n == 0:
+        return rows, np.zeros(0, dtype=bool)
+    centre = q.mean(axis=1)
+    ua = ((q[:, 1] - q[:, 0]) + (q[:, 2] - q[:, 3])) / 4.0
+    va = ((q[:, 3] - q[:, 0]) + (q[:, 2] - q[:, 1])) / 4.0
+    first = match_stamps(ua, va, sets, orients, set_hint)
+    O = len(orients)
+    x, y = _q4(centre[:, 0]), _q4(centre[:, 1])
+    a, c, b, d = _q4(ua[:, 0]), _q4(ua[:, 1]), _q4(va[:, 0]), _q4(va[:, 1])
+    pos_ok = (np.abs(x) <= MAX_POS) & (np.abs(y) <= MAX_POS)
+    aff_ok = (np.maximum.reduce([np.abs(a), np.abs(b), np.abs(c), np.abs(d)]) <= MAX_MATRIX) & (a * d - b * c != 0)
+    is_stamp = first >= 0
+    valid = pos_ok & (is_stamp | aff_ok)
+    x, y = np.where(valid, x, 0), np.where(valid, y, 0)
+    rows[:, KIND] = np.where(is_stamp, STAMP, AFFINE)
+    rows[:, SET] = np.where(is_stamp, first // O, 0)
+    rows[:, ORIENT] = np.where(is_stamp, first % O, 0)
+    rows[:, TMPL] = np.asarray(templates, dtype=np.int64)
+    rows[:, X] = x
+    rows[:, Y] = y
+    aff = (~is_stamp) & valid
+    for col, v in ((MA, a), (MB, b), (MC, c), (MD, d)):
+        rows[:, col] = np.where(aff, v, 0)
+    rows[:, R:A + 1] = np.asarray(rgba, dtype=np.int64).reshape(n, 4)
+    return rows, valid
+
+
+def quads_to_strokes(corners, templates, rgba, sets, orients, set_hint=None):
+    """quads_to_rows as model tuples (None where invalid), for tests against the oracle."""
+    rows, valid = quads_to_rows(corners, templates, rgba, sets, orients, set_hint)
+    tup = StrokeTable(rows).to_tuples()
+    return [t if v else None for t, v in zip(tup, valid.tolist())]
 
 
 def points_to_curve(points, rgba):
-    """A curve stroke from (x px, y px, width px) points; None when empty or out of range."""
+    """A curve stroke (tuple) from (x px, y px, width px) points; None when empty or out of range.
+    One curve at a time: curves drawn by hand are few."""
     pts = []
     for (x, y, w) in points:
-        qx, qy, qw = _q4(x), _q4(y), max(0, _q4(w))
+        qx, qy, qw = (int(np.floor(v * 16.0 + 0.5)) for v in (x, y, w))
+        qw = max(0, qw)
         if abs(qx) > MAX_POS or abs(qy) > MAX_POS or qw > (1 << 16):
             return None
         pts.append((qx, qy, qw))
     if not pts:
         return None
     return (2,) + tuple(rgba) + (tuple(pts),)
-
-
-def polygon_points(stroke) -> List[Tuple[float, float]]:
-    """(x px, y px) per vertex of a polygon stroke."""
-    return [(x / 16.0, y / 16.0) for (x, y) in stroke[6]]
-
-
-def points_to_polygon(points, rgba, grid: int):
-    """A polygon stroke (format 1.2) from (x px, y px) vertices rounded to Q4; None when it has
-    fewer than 3 vertices, one out of range, or a reserved grid N."""
-    pts = []
-    for (x, y) in points:
-        qx, qy = _q4(x), _q4(y)
-        if abs(qx) > MAX_POS or abs(qy) > MAX_POS:
-            return None
-        pts.append((qx, qy))
-    if len(pts) < 3 or grid == 1 or not 0 <= grid <= 16:
-        return None
-    return (3,) + tuple(rgba) + (grid, tuple(pts))

@@ -1,131 +1,71 @@
-"""Reader of .spt files in stored mode (format/SPEC.md sections 2-6), standard library only.
+"""Reader of .spt files in stored mode (format/SPEC.md sections 2-6).
 
 Range-coded frames (coding 1) are not decoded here on purpose: the add-on runs
 `spt pack IN --stored -o TMP` and reads the result, so there is one entropy decoder (libspt).
+Frame contents are decoded by a Decoding: the add-on's is ColumnarDecoding (numpy StrokeTables,
+strokes_np.py and state_np.py); tests/blender/reference/ plugs in a one-tuple-per-stroke oracle
+through the same container parser.
 """
 
 import struct
 from typing import Iterator, List
 
-from . import chunks
-from .model import (AFFINE, CURVE, POLYGON, INTER, KEY, MAX_CURVE_WIDTH, MAX_MATRIX, MAX_POS, STAMP,
-                    Frame, Header, Limits, Motion, NeedsPack, Roi, SptError, StreamInfo, Template)
+import numpy as np
 
-_STAMP = struct.Struct("<BBBBiiBBBB")          # kind included: the tuple is the stroke
-_AFFINE = struct.Struct("<BBiiiiiiBBBB")
-_CURVE_HEAD = struct.Struct("<BBBBBI")
-_POLYGON_HEAD = struct.Struct("<BBBBBBI")   # kind, r, g, b, a, grid N, n (format 1.2)
+from . import chunks, state_np, strokes_np
+from .model import (INTER, KEY, Frame, Header, Limits, Motion, NeedsPack, Roi, SptError, StreamInfo,
+                    Template)
+
 _U32 = struct.Struct("<I")
 _HEAD = struct.Struct("<HHIIIIIIB3BBBH")
 _FRAM = struct.Struct("<IBBH")
+
+
+class ColumnarDecoding:
+    """Frame contents as numpy: removals and motion vectors as arrays, stroke records as one
+    StrokeTable per frame over a curve pool shared by the file (strokes_np.py)."""
+
+    def __init__(self):
+        self.curves = []
+
+    def removed(self, body, offset: int, count: int):
+        return np.frombuffer(body, dtype="<u4", count=count, offset=offset).astype(np.int64)
+
+    def vectors(self, body, offset: int, count: int):
+        return np.frombuffer(body, dtype="<i2", count=2 * count, offset=offset).reshape(-1, 2).astype(np.int32)
+
+    def records(self, body, pos: int, count: int, path: str, base: int, info: StreamInfo, limits: Limits):
+        return strokes_np.parse_records(body, pos, count, path, base, len(info.templates),
+                                        len(info.header.sets), len(info.header.orientations),
+                                        limits.max_curve_points, self.curves, limits.max_polygon_vertices)
+
+    def live_lists(self, header: Header, frames: List[Frame], limits: Limits, path: str):
+        return state_np.apply_frames(header, frames, limits, path, self.curves)
 
 
 class SptFile:
     """Everything read from a file: stream info, frames as stored, completeness."""
 
     def __init__(self, path: str, info: StreamInfo, frames: List[Frame], complete: bool, problem: str,
-                 curves=None):
+                 decoding, tuples: bool):
         self.path = path
-        self.curves = curves        # columnar mode: the curve pool of the StrokeTables
+        self.decoding = decoding
+        self.curves = getattr(decoding, "curves", None)   # the curve pool of the StrokeTables
+        self.tuples = tuples        # live_lists gives tuple lists (model.py), not StrokeTables
         self.info = info
         self.frames = frames
         self.complete = complete    # False when IEND was missing (recovered frames only)
         self.problem = problem      # why the file is incomplete, "" otherwise
 
     def live_lists(self, limits: Limits = None) -> Iterator[list]:
-        """Yields the live stroke list after each frame (section 5): tuple lists, or StrokeTables
-        when the file was read with columnar=True."""
-        if self.curves is not None:
-            from . import state_np
-            return state_np.apply_frames(self.info.header, self.frames, limits or Limits(), self.path, self.curves)
-        return apply_frames(self.info.header, self.frames, limits or Limits(), self.path)
+        """Yields the live stroke list after each frame (section 5): StrokeTables when the file
+        was read with columnar=True, else lists of model.py tuples (small files, tests)."""
+        for live in self.decoding.live_lists(self.info.header, self.frames, limits or Limits(), self.path):
+            yield live.to_tuples() if self.tuples and hasattr(live, "to_tuples") else live
 
 
 def _err(path, offset, what):
     return SptError(f"{path}: byte {offset}: {what}")
-
-
-def _check_stroke(s, path, off, ntemplates, nsets, norients, limits):
-    k = s[0]
-    if k == STAMP:
-        if s[1] >= nsets or s[2] >= ntemplates or s[3] >= norients:
-            raise _err(path, off, f"stamp stroke refers to set {s[1]}, template {s[2]}, orientation {s[3]} "
-                                  f"(file has {nsets} sets, {ntemplates} templates, {norients} orientations)")
-        if abs(s[4]) > MAX_POS or abs(s[5]) > MAX_POS:
-            raise _err(path, off, "stamp position out of range")
-    elif k == AFFINE:
-        if s[1] >= ntemplates:
-            raise _err(path, off, f"affine stroke refers to template {s[1]} (file has {ntemplates})")
-        if abs(s[2]) > MAX_POS or abs(s[3]) > MAX_POS:
-            raise _err(path, off, "affine translation out of range")
-        if max(abs(s[4]), abs(s[5]), abs(s[6]), abs(s[7])) > MAX_MATRIX:
-            raise _err(path, off, "affine matrix entry out of range")
-        if s[4] * s[7] - s[5] * s[6] == 0:
-            raise _err(path, off, "affine matrix is singular")
-
-
-def parse_strokes(body, pos: int, count: int, path: str, base: int, info: StreamInfo, limits: Limits):
-    """Parses `count` stroke records from body[pos:]; returns (strokes, new_pos)."""
-    n = len(body)
-    ntemplates = len(info.templates)
-    nsets = len(info.header.sets)
-    norients = len(info.header.orientations)
-    out = []
-    append = out.append
-    stamp_unpack = _STAMP.unpack_from
-    for _ in range(count):
-        if pos >= n:
-            raise _err(path, base + pos, f"frame body ends inside its stroke list ({len(out)} of {count} strokes)")
-        kind = body[pos]
-        if kind == STAMP:
-            if pos + 16 > n:
-                raise _err(path, base + pos, "truncated stamp stroke")
-            s = stamp_unpack(body, pos)
-            # Inline range checks: this loop runs millions of times.
-            if s[1] >= nsets or s[2] >= ntemplates or s[3] >= norients or \
-                    not (-MAX_POS <= s[4] <= MAX_POS and -MAX_POS <= s[5] <= MAX_POS):
-                _check_stroke(s, path, base + pos, ntemplates, nsets, norients, limits)
-            pos += 16
-        elif kind == AFFINE:
-            if pos + 30 > n:
-                raise _err(path, base + pos, "truncated affine stroke")
-            s = _AFFINE.unpack_from(body, pos)
-            _check_stroke(s, path, base + pos, ntemplates, nsets, norients, limits)
-            pos += 30
-        elif kind == CURVE:
-            if pos + 9 > n:
-                raise _err(path, base + pos, "truncated curve stroke")
-            _, r, g, b, a, npts = _CURVE_HEAD.unpack_from(body, pos)
-            if npts < 1 or npts > limits.max_curve_points:
-                raise _err(path, base + pos, f"curve stroke has {npts} points (allowed 1..{limits.max_curve_points})")
-            if pos + 9 + 12 * npts > n:
-                raise _err(path, base + pos, f"curve stroke of {npts} points runs past the frame body")
-            pts = tuple(struct.iter_unpack("<iiI", body[pos + 9:pos + 9 + 12 * npts]))
-            for (x, y, w) in pts:
-                if abs(x) > MAX_POS or abs(y) > MAX_POS or w > MAX_CURVE_WIDTH:
-                    raise _err(path, base + pos, "curve point out of range")
-            s = (CURVE, r, g, b, a, pts)
-            pos += 9 + 12 * npts
-        elif kind == POLYGON:
-            if pos + 10 > n:
-                raise _err(path, base + pos, "truncated polygon stroke")
-            _, r, g, b, a, grid, npts = _POLYGON_HEAD.unpack_from(body, pos)
-            if grid == 1 or grid > 16:
-                raise _err(path, base + pos, f"polygon supersampling {grid} is reserved")
-            if npts < 3 or npts > limits.max_polygon_vertices:
-                raise _err(path, base + pos, f"polygon stroke has {npts} vertices (allowed 3..{limits.max_polygon_vertices})")
-            if pos + 10 + 8 * npts > n:
-                raise _err(path, base + pos, f"polygon stroke of {npts} vertices runs past the frame body")
-            pts = tuple(struct.iter_unpack("<ii", body[pos + 10:pos + 10 + 8 * npts]))
-            for (x, y) in pts:
-                if abs(x) > MAX_POS or abs(y) > MAX_POS:
-                    raise _err(path, base + pos, "polygon vertex out of range")
-            s = (POLYGON, r, g, b, a, grid, pts)
-            pos += 10 + 8 * npts
-        else:
-            raise _err(path, base + pos, f"unknown stroke kind {kind}")
-        append(s)
-    return out, pos
 
 
 def _parse_head(p, path, off, limits) -> Header:
@@ -215,9 +155,8 @@ def _parse_rois(p, path, off):
     return [Roi(*r) for r in struct.iter_unpack("<IIIIII", p[4:])]
 
 
-def _parse_frame(p, path, off, info, limits, curves=None) -> Frame:
-    """One FRAM chunk. With a curve pool (columnar mode) the strokes become a StrokeTable and
-    removals / motion vectors numpy arrays (strokes_np.py); otherwise tuples and lists."""
+def _parse_frame(p, path, off, info, limits, decoding) -> Frame:
+    """One FRAM chunk; its contents as the decoding makes them."""
     if len(p) < _FRAM.size:
         raise _err(path, off, "FRAM payload too short")
     index, ftype, coding, res = _FRAM.unpack_from(p, 0)
@@ -240,11 +179,7 @@ def _parse_frame(p, path, off, info, limits, curves=None) -> Frame:
         (nrem,) = _U32.unpack_from(body, 0)
         if 4 + 4 * nrem > n:
             raise _err(path, base, f"frame {index}: {nrem} removed indices run past the body")
-        if curves is not None:
-            import numpy as np
-            fr.removed = np.frombuffer(body, dtype="<u4", count=nrem, offset=4).astype(np.int64)
-        else:
-            fr.removed = list(struct.unpack_from(f"<{nrem}I", body, 4))
+        fr.removed = decoding.removed(body, 4, nrem)
         pos = 4 + 4 * nrem
         if pos >= n:
             raise _err(path, base + pos, f"frame {index}: body ends before motion_present")
@@ -260,13 +195,7 @@ def _parse_frame(p, path, off, info, limits, curves=None) -> Frame:
             pos += 6
             if pos + 4 * cols * rows > n:
                 raise _err(path, base + pos, f"frame {index}: motion vectors run past the body")
-            if curves is not None:
-                import numpy as np
-                vec = np.frombuffer(body, dtype="<i2", count=2 * cols * rows, offset=pos).reshape(-1, 2)
-                fr.motion = Motion(bs, cols, rows, vec.astype(np.int32))
-            else:
-                flat = struct.unpack_from(f"<{2 * cols * rows}h", body, pos)
-                fr.motion = Motion(bs, cols, rows, list(zip(flat[0::2], flat[1::2])))
+            fr.motion = Motion(bs, cols, rows, decoding.vectors(body, pos, cols * rows))
             pos += 4 * cols * rows
         elif present != 0:
             raise _err(path, base + pos - 1, f"frame {index}: motion_present is {present}")
@@ -276,23 +205,18 @@ def _parse_frame(p, path, off, info, limits, curves=None) -> Frame:
     pos += 4
     if count > limits.max_strokes_per_frame or count > (n - pos):  # each record is >= 1 byte
         raise _err(path, base + pos - 4, f"frame {index}: stroke count {count} is impossible for a {n}-byte body")
-    if curves is not None:
-        from . import strokes_np
-        fr.added, pos = strokes_np.parse_records(body, pos, count, path, base, len(info.templates),
-                                                 len(info.header.sets), len(info.header.orientations),
-                                                 limits.max_curve_points, curves, limits.max_polygon_vertices)
-    else:
-        fr.added, pos = parse_strokes(body, pos, count, path, base, info, limits)
+    fr.added, pos = decoding.records(body, pos, count, path, base, info, limits)
     if pos != n:
         raise _err(path, base + pos, f"frame {index}: {n - pos} bytes after the last stroke record")
     return fr
 
 
-def read_bytes(data, path: str = "<memory>", limits: Limits = None, columnar: bool = False) -> SptFile:
-    """Reads a stored-mode file. columnar=True (needs numpy) gives StrokeTables instead of tuples:
-    the fast path for millions of strokes."""
+def read_bytes(data, path: str = "<memory>", limits: Limits = None, columnar: bool = False,
+               decoding=None) -> SptFile:
+    """Reads a stored-mode file. live_lists() gives StrokeTables with columnar=True (millions of
+    strokes), tuple lists otherwise; decoding (default ColumnarDecoding) decodes frame contents."""
     limits = limits or Limits()
-    curves = [] if columnar else None
+    decoding = decoding or ColumnarDecoding()
     if len(data) < 8 or bytes(data[:8]) != chunks.SIGNATURE:
         raise SptError(f"{path}: byte 0: not a .spt file (bad signature)")
     info = StreamInfo()
@@ -324,7 +248,7 @@ def read_bytes(data, path: str = "<memory>", limits: Limits = None, columnar: bo
                 raise _err(path, off, "too many templates")
             info.templates.append(_parse_tmpl(p, path, off, limits))
         elif ctype == b"FRAM":
-            fr = _parse_frame(p, path, off, info, limits, curves)
+            fr = _parse_frame(p, path, off, info, limits, decoding)
             if fr.index != len(frames):
                 raise _err(path, off, f"frame index {fr.index}, expected {len(frames)}")
             if fr.index == 0 and fr.type != KEY:
@@ -353,17 +277,17 @@ def read_bytes(data, path: str = "<memory>", limits: Limits = None, columnar: bo
         raise SptError(f"{path}: no HEAD chunk ({problem or 'empty file'})")
     if not ended:
         problem = problem or "file ends without IEND"
-    return SptFile(path, info, frames, ended, "" if ended else problem, curves)
+    return SptFile(path, info, frames, ended, "" if ended else problem, decoding, not columnar)
 
 
-def read_file(path: str, limits: Limits = None, columnar: bool = False) -> SptFile:
+def read_file(path: str, limits: Limits = None, columnar: bool = False, decoding=None) -> SptFile:
     limits = limits or Limits()
     try:
         with open(path, "rb") as f:
             data = f.read()
     except OSError as e:
         raise SptError(f"{path}: cannot read: {e.strerror or e}") from None
-    return read_bytes(data, path, limits, columnar)
+    return read_bytes(data, path, limits, columnar, decoding)
 
 
 def is_stored(path: str) -> bool:
@@ -373,102 +297,3 @@ def is_stored(path: str) -> bool:
         return True
     except NeedsPack:
         return False
-
-
-
-
-def apply_frames(header: Header, frames: List[Frame], limits: Limits, path: str = "<memory>"):
-    """Yields the live list after each frame (remove, move, add: section 5)."""
-    live: list = []
-    for fr in frames:
-        if fr.type == KEY:
-            live = list(fr.added)
-        else:
-            if fr.removed:
-                prev = -1
-                for i in fr.removed:
-                    if i <= prev or i >= len(live):
-                        raise SptError(f"{path}: frame {fr.index}: removed index {i} is not increasing or "
-                                       f">= the live list length {len(live)}")
-                    prev = i
-                drop = set(fr.removed)
-                live = [s for i, s in enumerate(live) if i not in drop]
-            else:
-                live = list(live)
-            if fr.motion is not None:
-                live = move_all(live, fr.motion, path, fr.index)
-            live.extend(fr.added)
-        if len(live) > limits.max_live_strokes:
-            raise SptError(f"{path}: frame {fr.index}: {len(live)} live strokes exceed the limit")
-        yield live
-
-
-def move_all(live: list, m: Motion, path="<memory>", index=0) -> list:
-    """Moves every stroke of the live list (section 5). Stamps, by far the most common, take an
-    inlined fast path: this runs for every stroke of every moving frame."""
-    bs16 = 16 * m.block_size
-    cols, rows = m.cols, m.rows
-    cmax, rmax = cols - 1, rows - 1
-    vec = m.vectors
-    out = []
-    append = out.append
-    for s in live:
-        if s[0] == STAMP:
-            x, y = s[4], s[5]
-            bx = x // bs16
-            by = y // bs16
-            if bx < 0:
-                bx = 0
-            elif bx > cmax:
-                bx = cmax
-            if by < 0:
-                by = 0
-            elif by > rmax:
-                by = rmax
-            dx, dy = vec[by * cols + bx]
-            if dx or dy:
-                x += dx
-                y += dy
-                if x > MAX_POS or x < -MAX_POS or y > MAX_POS or y < -MAX_POS:
-                    raise SptError(f"{path}: frame {index}: motion moves a stroke out of range")
-                s = (STAMP, s[1], s[2], s[3], x, y, s[6], s[7], s[8], s[9])
-            append(s)
-        else:
-            append(move_stroke(s, m, path, index))
-    return out
-
-
-def _block_vector(m: Motion, px: int, py: int):
-    bs16 = 16 * m.block_size
-    bx = min(max(px // bs16, 0), m.cols - 1)
-    by = min(max(py // bs16, 0), m.rows - 1)
-    return m.vectors[by * m.cols + bx]
-
-
-def move_stroke(s, m: Motion, path="<memory>", index=0):
-    def chk(v):
-        if abs(v) > MAX_POS:
-            raise SptError(f"{path}: frame {index}: motion moves a stroke out of range")
-        return v
-    k = s[0]
-    if k == STAMP:
-        dx, dy = _block_vector(m, s[4], s[5])
-        if dx == 0 and dy == 0:
-            return s
-        return s[:4] + (chk(s[4] + dx), chk(s[5] + dy)) + s[6:]
-    if k == AFFINE:
-        dx, dy = _block_vector(m, s[2], s[3])
-        if dx == 0 and dy == 0:
-            return s
-        return s[:2] + (chk(s[2] + dx), chk(s[3] + dy)) + s[4:]
-    if k == POLYGON:
-        # Rigidly, by the vector of the block holding the first vertex (SPEC.md 5).
-        dx, dy = _block_vector(m, s[6][0][0], s[6][0][1])
-        if dx == 0 and dy == 0:
-            return s
-        return s[:6] + (tuple((chk(x + dx), chk(y + dy)) for (x, y) in s[6]),)
-    pts = []
-    for (x, y, w) in s[5]:
-        dx, dy = _block_vector(m, x, y)
-        pts.append((chk(x + dx), chk(y + dy), w))
-    return s[:5] + (tuple(pts),)

@@ -1,6 +1,6 @@
 """Stroke lists as numpy tables: the file layer's fast path (Blender's Python has numpy).
 
-The reference code (reader.py, writer.py, geometry.py) keeps one Python tuple per stroke, which
+The reference code (tests/blender/reference/) keeps one Python tuple per stroke, which
 is simple and needs only the standard library, but costs microseconds per stroke; a 2-million
 stroke animation needs the vectorised form. A StrokeTable holds one int32 row per stroke:
 
@@ -21,7 +21,7 @@ entry is shared by every frame the polygon lives in, and the exporter's motion s
 Unused columns are always 0, so two rows are equal exactly when the strokes are (curves and
 polygons: when their pool entries are the same entry; writers that compare strokes dedupe the
 pool by content and shape).
-tests/blender/test_io.py checks this module against the reference on the same files.
+tests/blender/test_io.py checks this module against that oracle on the same files.
 """
 
 import struct
@@ -113,6 +113,25 @@ class StrokeTable:
     def record_bytes(self) -> bytes:
         """The stroke records of a stored frame body (section 4), in order."""
         return records_bytes(self.rows, self.curves)
+
+
+def tables_from_lists(live_lists):
+    """StrokeTables of tuple lists over one curve pool deduplicated by content and shape, so that
+    a curve or polygon that lives on from frame to frame has equal rows in every table (the
+    frame coder matches strokes by row). Returns (tables, pool)."""
+    pool, ids, tables = [], {}, []
+    for ls in live_lists:
+        t = StrokeTable.from_tuples(list(ls))
+        rows = t.rows
+        for i in np.flatnonzero((rows[:, KIND] == CURVE) | (rows[:, KIND] == POLYGON)).tolist():
+            arr = t.curves[rows[i, CURVE_ID]]
+            key = (arr.shape[1], arr.tobytes())
+            if key not in ids:
+                ids[key] = len(pool)
+                pool.append(arr)
+            rows[i, CURVE_ID] = ids[key]
+        tables.append(StrokeTable(rows, pool))
+    return tables, pool
 
 
 def concat(tables, curves) -> StrokeTable:

@@ -1,4 +1,4 @@
-"""Writer of .spt files in stored mode (coding 0), standard library only.
+"""Writer of .spt files in stored mode (coding 0).
 
 The output goes to a temporary file beside the target and is renamed into place at the end, so
 a failure never leaves a half-written file."""
@@ -8,13 +8,9 @@ import struct
 import tempfile
 from typing import Iterable, List
 
-from . import chunks
-from .model import AFFINE, CURVE, INTER, KEY, POLYGON, STAMP, Frame, SptError, StreamInfo
-
-_STAMP = struct.Struct("<BBBBiiBBBB")
-_AFFINE = struct.Struct("<BBiiiiiiBBBB")
-_CURVE_HEAD = struct.Struct("<BBBBBI")
-
+from . import chunks, state_np, strokes_np
+from .model import INTER, KEY, POLYGON, Frame, SptError, StreamInfo
+from .strokes_np import StrokeTable
 
 def head_payload(info: StreamInfo, frame_count: int, minor: int = 0) -> bytes:
     """HEAD; `minor` is the format's minor version: 2 when a frame holds a polygon (SPEC.md 11)."""
@@ -46,32 +42,11 @@ def meta_payload(items) -> bytes:
     return b"".join(out)
 
 
-def strokes_bytes(strokes: Iterable) -> bytes:
-    out = []
-    append = out.append
-    sp, ap = _STAMP.pack, _AFFINE.pack
-    for s in strokes:
-        k = s[0]
-        if k == STAMP:
-            append(sp(*s))
-        elif k == AFFINE:
-            append(ap(*s))
-        elif k == CURVE:
-            pts = s[5]
-            append(_CURVE_HEAD.pack(CURVE, s[1], s[2], s[3], s[4], len(pts)))
-            append(b"".join(struct.pack("<iiI", *p) for p in pts))
-        elif k == POLYGON:
-            pts = s[6]
-            append(struct.pack("<BBBBBBI", POLYGON, s[1], s[2], s[3], s[4], s[5], len(pts)))
-            append(b"".join(struct.pack("<ii", *p) for p in pts))
-        else:
-            raise SptError(f"unknown stroke kind {k}")
-    return b"".join(out)
-
-
 def _added_bytes(added) -> bytes:
-    # A StrokeTable (strokes_np.py, columnar mode) packs itself; tuples go through the reference.
-    return added.record_bytes() if hasattr(added, "record_bytes") else strokes_bytes(added)
+    # A StrokeTable (strokes_np.py) packs itself; a list of model.py tuples becomes one first.
+    if not hasattr(added, "record_bytes"):
+        added = StrokeTable.from_tuples(list(added))
+    return added.record_bytes()
 
 
 def frame_payload(fr: Frame) -> bytes:
@@ -153,35 +128,7 @@ def atomic_write(path: str, data: bytes) -> None:
 
 
 def frames_from_lists(live_lists: Iterable[list]) -> List[Frame]:
-    """Codes a sequence of live lists as key and inter frames (section 5, without motion).
-
-    An inter frame keeps the longest prefix of the new list that is a subsequence of the previous
-    one (greedy earliest matching is optimal for that), removes the rest and appends the tail. A
-    key frame is used when that would not be smaller."""
-    frames: List[Frame] = []
-    prev = None
-    for i, cur in enumerate(live_lists):
-        cur = list(cur)
-        if prev is None:
-            frames.append(Frame(index=i, type=KEY, added=cur))
-        else:
-            kept = []   # indices into prev of strokes kept, in order
-            j = 0
-            n = len(prev)
-            for s in cur:
-                while j < n and prev[j] != s:
-                    j += 1
-                if j == n:
-                    break
-                kept.append(j)
-                j += 1
-            keptset = set(kept)
-            removed = [k for k in range(n) if k not in keptset]
-            added = cur[len(kept):]
-            # Stored sizes: a removal costs 4 bytes, a record at least 16; key re-sends all.
-            if 4 * len(removed) + 16 * len(added) < 16 * len(cur):
-                frames.append(Frame(index=i, type=INTER, removed=removed, added=added))
-            else:
-                frames.append(Frame(index=i, type=KEY, added=cur))
-        prev = cur
-    return frames
+    """Codes a sequence of live lists (model.py tuples) as key and inter frames without motion
+    (section 5), through the same coder as the exporter (state_np.frames_from_tables)."""
+    tables, curves = strokes_np.tables_from_lists(live_lists)
+    return state_np.frames_from_tables(tables, curves)

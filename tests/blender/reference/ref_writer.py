@@ -1,0 +1,71 @@
+"""The reference (oracle) of the add-on's record packing and frame coding: one Python tuple per
+stroke (model.py), standard library only. test_io.py checks that the add-on's vectorised versions
+(strokes_np.records_bytes, state_np.frames_from_tables) give the same bytes and frames."""
+
+import struct
+from typing import Iterable, List
+
+from spt_grease_pencil.io.model import AFFINE, CURVE, INTER, KEY, POLYGON, STAMP, Frame, SptError
+
+_STAMP = struct.Struct("<BBBBiiBBBB")
+_AFFINE = struct.Struct("<BBiiiiiiBBBB")
+_CURVE_HEAD = struct.Struct("<BBBBBI")
+
+
+def strokes_bytes(strokes: Iterable) -> bytes:
+    out = []
+    append = out.append
+    sp, ap = _STAMP.pack, _AFFINE.pack
+    for s in strokes:
+        k = s[0]
+        if k == STAMP:
+            append(sp(*s))
+        elif k == AFFINE:
+            append(ap(*s))
+        elif k == CURVE:
+            pts = s[5]
+            append(_CURVE_HEAD.pack(CURVE, s[1], s[2], s[3], s[4], len(pts)))
+            append(b"".join(struct.pack("<iiI", *p) for p in pts))
+        elif k == POLYGON:
+            pts = s[6]
+            append(struct.pack("<BBBBBBI", POLYGON, s[1], s[2], s[3], s[4], s[5], len(pts)))
+            append(b"".join(struct.pack("<ii", *p) for p in pts))
+        else:
+            raise SptError(f"unknown stroke kind {k}")
+    return b"".join(out)
+
+
+
+def frames_from_lists(live_lists: Iterable[list]) -> List[Frame]:
+    """Codes a sequence of live lists as key and inter frames (section 5, without motion).
+
+    An inter frame keeps the longest prefix of the new list that is a subsequence of the previous
+    one (greedy earliest matching is optimal for that), removes the rest and appends the tail. A
+    key frame is used when that would not be smaller."""
+    frames: List[Frame] = []
+    prev = None
+    for i, cur in enumerate(live_lists):
+        cur = list(cur)
+        if prev is None:
+            frames.append(Frame(index=i, type=KEY, added=cur))
+        else:
+            kept = []   # indices into prev of strokes kept, in order
+            j = 0
+            n = len(prev)
+            for s in cur:
+                while j < n and prev[j] != s:
+                    j += 1
+                if j == n:
+                    break
+                kept.append(j)
+                j += 1
+            keptset = set(kept)
+            removed = [k for k in range(n) if k not in keptset]
+            added = cur[len(kept):]
+            # Stored sizes: a removal costs 4 bytes, a record at least 16; key re-sends all.
+            if 4 * len(removed) + 16 * len(added) < 16 * len(cur):
+                frames.append(Frame(index=i, type=INTER, removed=removed, added=added))
+            else:
+                frames.append(Frame(index=i, type=KEY, added=cur))
+        prev = cur
+    return frames
