@@ -209,6 +209,13 @@ def rotate(s, angle):
     s.points = [(cx + (x - cx) * c - (z - cz) * sn, y, cz + (x - cx) * sn + (z - cz) * c) for x, y, z in pts]
 
 
+def scale(s, factor):
+    pts = s.points
+    cx = sum(p[0] for p in pts) / len(pts)
+    cz = sum(p[2] for p in pts) / len(pts)
+    s.points = [(cx + (x - cx) * factor, y, cz + (z - cz) * factor) for x, y, z in pts]
+
+
 def draw_line(f, material_index, co, width_px, cyclic=False):
     """A stroke as the Draw tool leaves it (no spt data): points `co` (x, y, z metres),
     `width_px` wide. v2: line_width px with pressure 1; v3: radius = width / 2 in metres."""

@@ -104,13 +104,15 @@ for n, f in frames.items():
     merged.update(m)
     where.update({k: f for k in m})
 stamps = [k for k, s in enumerate(lst) if s[0] == STAMP]
-k_del, k_col, k_move, k_rot = stamps[0], stamps[1], stamps[2], stamps[3]
+k_del, k_col, k_move, k_rot, k_scale = stamps[0], stamps[1], stamps[2], stamps[3], stamps[4]
 # recolour (vertex paint tints the fill colour)
 merged[k_col].fill = (colors.to_linear(10), colors.to_linear(20), colors.to_linear(30), 1.0)
 # move by (+2 px, -1 px): image y up is +Z
 G.move(merged[k_move], 0.002, 0.001)
 # rotate by 0.3 rad about the centre
 G.rotate(merged[k_rot], 0.3)
+# scale by 1.5 about the centre
+G.scale(merged[k_scale], 1.5)
 # draw a new stroke in the curves layer (what the draw tool makes: a line with a line material)
 G.draw_line(frames["curves"], len(gpd.materials) - 1, [(0.01, 0, -0.01), (0.05, 0, -0.02), (0.09, 0, -0.01)], 10)
 C.check(all(s.ordinal == -1 for s in G.strokes(frames["curves"])[-1:]), "a new stroke carries no spt order")
@@ -125,25 +127,38 @@ C.check(lst[k_del] not in e and len([s for s in e if s == lst[k_del]]) == 0, "de
 C.check(s_col in e, "recoloured stroke")
 mv = lst[k_move]
 C.check(mv[:4] + (mv[4] + 32, mv[5] - 16) + mv[6:] in e, "moved stroke stays a stamp, moved by (32, -16) Q4")
-rot = [s for s in e if s[0] == AFFINE and s not in lst]
-C.check(len(rot) == 1, f"rotated stroke became an affine stroke: {rot}")
-r0 = lst[k_rot]
-C.check(abs(rot[0][2] - r0[4]) <= 1 and abs(rot[0][3] - r0[5]) <= 1 and rot[0][1] == r0[2], "rotated around its centre")
+new_affine = [s for s in e if s[0] == AFFINE and s not in lst]
+C.check(len(new_affine) == 2, f"the rotated and the scaled stamp became affine strokes: {new_affine}")
+
+
+def near(a, stamp):
+    return abs(a[2] - stamp[4]) <= 1 and abs(a[3] - stamp[5]) <= 1 and a[1] == stamp[2]
+
+
+r0, s0 = lst[k_rot], lst[k_scale]
+rot = [a for a in new_affine if near(a, r0)]
+C.check(len(rot) == 1, f"rotated around its centre: {new_affine}")
+scaled = [a for a in new_affine if near(a, s0)]
+C.check(len(scaled) == 1, f"scaled around its centre: {new_affine}")
+sw, sh = h.sets[s0[1]]
+det = abs(scaled[0][4] * scaled[0][7] - scaled[0][5] * scaled[0][6])
+C.check(abs(det / (2.25 * (8 * sw) * (8 * sh)) - 1) < 0.02, f"scaled by 1.5: det {det} for a {sw}x{sh} stamp")
 drawn = [s for s in e if s[0] == CURVE and s not in lst]
 C.check(len(drawn) == 1 and [p[:2] for p in drawn[0][5]] == [(160, 160), (800, 320), (1440, 160)],
         f"hand-drawn stroke is a curve: {drawn}")
 C.check(drawn[0][5][0][2] == 160, f"width 10 px as drawn: {drawn[0][5][0][2]}")
 C.check(len(e) == len(lst) + 1 - 1, "one stroke deleted, one drawn")
 # Everything else keeps its order.
-rest = [s for s in e if s != s_col and s not in rot and s not in drawn and s[0:4] + s[6:] != mv[0:4] + mv[6:]]
-want = [s for k, s in enumerate(lst) if k not in (k_del, k_col, k_move, k_rot)]
+rest = [s for s in e if s != s_col and s not in new_affine and s not in drawn and s[0:4] + s[6:] != mv[0:4] + mv[6:]]
+want = [s for k, s in enumerate(lst) if k not in (k_del, k_col, k_move, k_rot, k_scale)]
 C.check(rest == want, "untouched strokes keep their drawing order")
 
 # hide a layer: its strokes are left out
 G.hide_layer(obj, "shapes")
 got = export_(obj, os.path.join(work, "hidden.spt"))
 C.check(all(s[0] != AFFINE for k, lst_ in enumerate(got) if k != fi for s in lst_), "hidden layer left out")
-C.check([s for s in got[fi] if s[0] == AFFINE] == rot, "the rotated stamp lives in its set's layer")
+C.check([s for s in got[fi] if s[0] == AFFINE] == [s for s in e if s in new_affine],
+        "the rotated and scaled stamps live in their sets' layers")
 C.check(got[0] == [s for s in orig_lists[0] if s[0] != AFFINE], "the rest of frame 0 unchanged")
 G.hide_layer(obj, "shapes", False)
 edited = export_(obj, os.path.join(work, "shown.spt"))
