@@ -37,12 +37,19 @@ def stencil_image(name: str, coverage: np.ndarray):
     return img
 
 
-def template_material(name: str, image):
+def _gp_material(name: str, stroke: bool, fill: bool):
+    """A Grease Pencil material that shows its line, its fill or both. Blender 5.x also decides
+    this per stroke (gp_v3.fill_frame writes fill_id and hide_stroke to agree)."""
     mat = bpy.data.materials.new(name)
     bpy.data.materials.create_gpencil_data(mat)
     gp = mat.grease_pencil
-    gp.show_stroke = False
-    gp.show_fill = True
+    gp.show_stroke = stroke
+    gp.show_fill = fill
+    return mat, gp
+
+
+def template_material(name: str, image):
+    mat, gp = _gp_material(name, stroke=False, fill=True)
     gp.fill_style = 'TEXTURE'
     gp.fill_image = image
     gp.mix_factor = 1.0
@@ -53,23 +60,15 @@ def template_material(name: str, image):
 
 
 def curve_material(name: str):
-    mat = bpy.data.materials.new(name)
-    bpy.data.materials.create_gpencil_data(mat)
-    gp = mat.grease_pencil
-    gp.show_stroke = True
-    gp.show_fill = False
+    mat, gp = _gp_material(name, stroke=True, fill=False)
     gp.color = (1.0, 1.0, 1.0, 1.0)
     return mat
 
 
 def polygon_material(name: str, alpha: int):
-    """Solid fill, no line: white with the polygons' alpha, tinted per stroke by
-    vertex_color_fill (mix 1), so vertex paint recolours a polygon as it does a quad."""
-    mat = bpy.data.materials.new(name)
-    bpy.data.materials.create_gpencil_data(mat)
-    gp = mat.grease_pencil
-    gp.show_stroke = False
-    gp.show_fill = True
+    """Solid fill, no line: white with the polygons' alpha, tinted per stroke by the fill colour
+    (mix 1), so vertex paint recolours a polygon as it does a quad."""
+    mat, gp = _gp_material(name, stroke=False, fill=True)
     gp.fill_style = 'SOLID'
     gp.fill_color = (1.0, 1.0, 1.0, alpha / 255.0)
     return mat

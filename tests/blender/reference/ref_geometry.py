@@ -2,16 +2,7 @@
 Python tuple at a time, in pixel units. Kept with the tests; the add-on ships only the vectorised
 version, and tests/blender/test_io.py checks that both give identical results.
 
-A stamp or affine stroke becomes a quad: the images of the template corners
-(u, v) = (-1,-1), (1,-1), (1,1), (-1,1) in pixel coordinates (x right, y down). Stamps are
-centred on their exact Q4 position x/16, y/16 (the renderer snaps to the pixel centre; the quad
-keeps the sub-pixel position so it survives a round trip). Float32 holds every Q4/16 value with
-|v| < 2^20 px exactly, and the centre is recovered by rounding, so unedited strokes come back
-bit-exact.
-
-Stamp geometry (same convention as libspt): the template is scaled to the set's w x h and rotated
-by the table entry (cos, sin): u axis = (w/2)(cos, sin), v axis = (h/2)(-sin, cos).
-
+The conventions (corners, Q4 centres, stamp axes) are those io/geometry.py states.
 """
 
 import math
