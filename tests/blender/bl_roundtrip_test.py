@@ -174,4 +174,21 @@ G.copy_key(obj, last, last + 1)
 scene.frame_end = last + 1
 got = export_(obj, os.path.join(work, "inserted-key.spt"))
 C.check(len(got) == len(edited) + 1 and got[-1] == got[-2], "an inserted key frame exports as a new frame")
+
+# Source frame numbers (SPEC 3.3 source.first_frame): a clip painted from shot.1001.exr... lands
+# on the scene's frames from 1001 and exports numbered by the scene frames it is exported from.
+from spt_grease_pencil.io import writer  # noqa: E402
+inf, frs = spt_samples.animation(frames=3)
+inf.metadata.append(("source.first_frame", "1001"))
+numbered = os.path.join(work, "numbered.stored.spt")
+writer.write_stored(numbered, inf, frs)
+nobj = import_(numbered)
+C.check((scene.frame_start, scene.frame_end) == (1001, 1003), f"scene frames {scene.frame_start}-{scene.frame_end}")
+C.check(G.frame_numbers(G.layer(nobj, G.layer_names(nobj)[0])) == [1001, 1002, 1003], "GP frames from 1001")
+out = os.path.join(work, "numbered.exported.spt")
+C.check(export_(nobj, out) == list(read_file(numbered).live_lists()), "numbered clip exports its strokes")
+C.check(("source.first_frame", "1001") in read_file(out).info.metadata, "the export keeps its source numbers")
+scene.frame_start = 1002
+C.check(("source.first_frame", "1002") in read_file(export_(nobj, out) and out).info.metadata,
+        "an export from scene frame 1002 is numbered from 1002")
 print("OK")

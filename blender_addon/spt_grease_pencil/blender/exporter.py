@@ -204,6 +204,9 @@ def export_file(context, obj, path: str, spt_path: str = "", stored: bool = Fals
     scene = context.scene
     info = stream_info(obj, scene)
     first, last = scene.frame_start, scene.frame_end
+    # A file numbered by its source (source.first_frame) stays numbered by the scene frames it
+    # is exported from; a file without the key keeps none (its bytes then stay as they were).
+    info.metadata = [(k, str(first) if k == "source.first_frame" else v) for k, v in info.metadata]
     if last < first:
         raise SptError("the scene frame range is empty")
     tables = _material_tables(obj)

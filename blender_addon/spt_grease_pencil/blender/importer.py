@@ -59,7 +59,22 @@ def template_coverage(t, size: int = 128) -> np.ndarray:
     return np.where(inside, 255, 0).astype(np.uint8)
 
 
-def _scene_setup(context, info, count):
+BLENDER_MAX_FRAME = 1048574
+
+
+def source_first_frame(info):
+    """The source's number of frame 0 (SPEC 3.3, metadata source.first_frame: decimal, no sign), or
+    None when the file has none or a malformed one, or when its frames would not fit Blender's
+    frame range (then the clip starts at the scene's start frame, as files without the key do)."""
+    for key, value in info.metadata:
+        if key == "source.first_frame":
+            if not value.isascii() or not value.isdigit() or int(value) > 0xFFFFFFFF:
+                return None
+            return int(value)
+    return None
+
+
+def _scene_setup(context, info, count, start):
     scene = context.scene
     h = info.header
     scene.render.resolution_x = h.width
@@ -68,7 +83,8 @@ def _scene_setup(context, info, count):
     fps = h.fps_num / h.fps_den
     scene.render.fps = max(1, min(32767, round(fps)))
     scene.render.fps_base = scene.render.fps / fps
-    scene.frame_end = scene.frame_start + max(count, 1) - 1
+    scene.frame_start = start
+    scene.frame_end = start + max(count, 1) - 1
     world = scene.world
     if world is None:
         import bpy
@@ -172,7 +188,10 @@ def _build(context, f, tables, path, layering, progress):
             label = f"set {k} ({h.sets[k][0]}x{h.sets[k][1]})" if k < nsets else ("shapes" if k == nsets else "curves")
             layer_of[k] = gp.new_layer(obj, label)
 
-    start = context.scene.frame_start
+    # A clip painted from shot.1001.exr... lands on the scene's frames from 1001.
+    start = source_first_frame(info)
+    if start is None or start + len(tables) - 1 > BLENDER_MAX_FRAME:
+        start = context.scene.frame_start
     total_strokes = 0
     for fi, table in enumerate(tables):
         _fill_frame(table, start + fi, layer_of, layering, h, mat_of_tmpl, cmat_index, mat_of_poly)
@@ -187,7 +206,7 @@ def _build(context, f, tables, path, layering, progress):
     gpd["spt_source"] = path
     # Export tries these block sizes first to find the motion fields again (state_np.find_motion).
     gpd["spt_motion_blocks"] = sorted({fr.motion.block_size for fr in f.frames if fr.motion is not None})
-    _scene_setup(context, info, len(tables))
+    _scene_setup(context, info, len(tables), start)
     cam = gp.new_camera(context, f"{name} camera", h.width, h.height)
     context.scene.camera = cam
     return obj, layer_of, total_strokes
