@@ -5,7 +5,7 @@
 
 #include "spt_import/export.hpp"
 #include "spt_import/codec.hpp"
-#include "spt_import/json.hpp"
+#include "spt_json/json.hpp"
 
 namespace spt::import {
 

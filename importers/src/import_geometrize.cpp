@@ -5,7 +5,7 @@
 
 #include "spt_import/geometrize.hpp"
 #include "spt_import/importer.hpp"
-#include "spt_import/json.hpp"
+#include "spt_json/json.hpp"
 #include "spt_import/shapes.hpp"
 
 namespace spt::import {

@@ -4,7 +4,7 @@
 
 #include "spt_import/codec.hpp"
 #include "spt_import/importer.hpp"
-#include "spt_import/json.hpp"
+#include "spt_json/json.hpp"
 #include "spt_import/shapes.hpp"
 
 namespace spt::import {

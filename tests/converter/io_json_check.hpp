@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "spt_import/json.hpp"
+#include "spt_json/json.hpp"
 
 namespace spt_test {
 

@@ -1,62 +1,14 @@
-// Minimal JSON writer (see json.hpp).
+// Minimal JSON writer (see json.hpp); strings are escaped by the shared JSON layer (json/).
 #include "io/json.hpp"
+
+#include "spt_json/json.hpp"
 
 #include <cmath>
 #include <cstdio>
 
 namespace spt::io {
 
-namespace {
-
-// Length of the valid UTF-8 sequence starting at s[i], or 0 when it is invalid.
-size_t utf8_len(std::string_view s, size_t i) {
-    const auto c = uint8_t(s[i]);
-    size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
-    if (n == 0 || i + n > s.size()) return 0;
-    for (size_t k = 1; k < n; ++k)
-        if ((uint8_t(s[i + k]) & 0xC0) != 0x80) return 0;
-    return n;
-}
-
-}  // namespace
-
-std::string json_quote(std::string_view s) {
-    std::string o;
-    o.reserve(s.size() + 2);
-    o += '"';
-    for (size_t i = 0; i < s.size();) {
-        const auto c = uint8_t(s[i]);
-        if (c == '"' || c == '\\') {
-            o += '\\';
-            o += char(c);
-        } else if (c == '\n') {
-            o += "\\n";
-        } else if (c == '\t') {
-            o += "\\t";
-        } else if (c == '\r') {
-            o += "\\r";
-        } else if (c < 0x20 || c == 0x7F) {
-            char b[8];
-            std::snprintf(b, sizeof b, "\\u%04x", c);
-            o += b;
-        } else if (c >= 0x80) {
-            size_t n = utf8_len(s, i);
-            if (n == 0) {
-                o += "\xEF\xBF\xBD";
-                ++i;
-                continue;
-            }
-            o.append(s.substr(i, n));
-            i += n;
-            continue;
-        } else {
-            o += char(c);
-        }
-        ++i;
-    }
-    o += '"';
-    return o;
-}
+std::string json_quote(std::string_view s) { return json::quote(s); }
 
 std::string json_number(double v) {
     if (!std::isfinite(v)) return "null";

@@ -9,7 +9,7 @@
 
 namespace spt::io {
 
-// `s` as a JSON string literal, quotes included. Invalid UTF-8 bytes become U+FFFD.
+// `s` as a JSON string literal, quotes included (spt::json::quote: invalid UTF-8 becomes U+FFFD).
 std::string json_quote(std::string_view s);
 // A JSON number: integers exactly, others with up to 6 significant decimals; NaN/inf -> null.
 std::string json_number(double v);

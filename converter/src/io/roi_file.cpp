@@ -5,7 +5,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "spt_import/json.hpp"
+#include "spt_json/json.hpp"
 
 namespace spt::io {
 

@@ -1,5 +1,8 @@
-// A small, strict JSON reader (RFC 8259) that remembers the line of every value, so importers
-// can name the line of a bad element; and helpers to write JSON. Standard library only.
+// The JSON the importers and the converter read and write. Parsing is nlohmann-json's strict
+// RFC 8259 SAX parser under spt's rules: limits are checked before anything is allocated for
+// them, duplicate object keys are refused, errors say file:line:column; the result is a small
+// tree that remembers the line of every value, so importers can name the line of a bad element.
+// Writing: the one JSON string escaper (nlohmann-json's, invalid UTF-8 replaced by U+FFFD).
 #pragma once
 
 #include <cstddef>
@@ -22,7 +25,7 @@ struct Value {
     uint32_t line = 0;       // 1-based line where the value starts
     bool boolean = false;
     double number = 0;
-    std::string text;        // String: decoded UTF-8; Number: the literal as written
+    std::string text;        // String: decoded UTF-8; Number: the literal (integers: canonical decimal)
     std::vector<Value> items;                          // Array
     std::vector<Member> members;  // Object, in file order (a vector of an incomplete type is fine since C++17)
 
@@ -49,11 +52,15 @@ struct ParseLimits {
     size_t max_values = size_t(1) << 26;  // total values in the document
 };
 
-// Parses a whole document. Errors name `source` (the file name) and the line; the offset is the
-// byte offset of the problem. Duplicate object keys are an error (they are ambiguous).
+// Parses a whole document. Errors name `source` (the file name), the line and the column; the
+// offset is the byte offset of the problem. Duplicate object keys are an error (they are
+// ambiguous). A UTF-8 byte order mark is skipped; invalid UTF-8 in strings is an error.
 Result<Value> parse(std::string_view text, const std::string& source, const ParseLimits& lim = {});
 
-// Writing: appends an escaped JSON string literal (with quotes).
+// `s` as a JSON string literal, quotes included: ", \ and control characters escaped, other
+// bytes as they are, except that invalid UTF-8 becomes U+FFFD (the output is always valid JSON).
+std::string quote(std::string_view s);
+// Appends quote(s) to `out`.
 void append_string(std::string& out, std::string_view s);
 
 }  // namespace spt::json
