@@ -104,7 +104,7 @@ public:
         if (size_t l = what.find("; last read: "); l != std::string::npos) what.resize(l);  // raw bytes, maybe many
         if (ex.id == 406) what = "number out of range: " + last_token;
         else if (what.find("unexpected end of input") != std::string::npos) what = "unexpected end of document (" + what + ")";
-        else if (what.find("expected end of input") != std::string::npos) what = "unexpected text after the JSON value";
+        else if (values_ > 0 && open_.empty()) what = "unexpected text after the JSON value (" + what + ")";
         const size_t offset = position > 0 ? std::min(position - 1, text_.size()) : 0;
         return fail_at(offset, what, Code::Corrupt);
     }
