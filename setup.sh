@@ -9,7 +9,7 @@ mode="${1:-demo}"
 build="${SPT_BUILD_DIR:-build}"
 
 core_pkgs=(build-essential cmake ninja-build pkg-config git python3
-           libopenimageio-dev openimageio-tools libopencv-dev libopenexr-dev)
+           libopenimageio-dev openimageio-tools libopencv-dev libopenexr-dev zlib1g-dev)
 test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy
            blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils
            emscripten node-acorn nodejs   # the web player (web/) and its Chromium test

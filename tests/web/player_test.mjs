@@ -92,6 +92,8 @@ try {
   for (const clip of ['clip.spt', 'stored.spt']) {
     const html = w(clip.replace('.spt', '.html'));
     run('export', w(clip), '-o', html);
+    // The stored mode compresses well: its page carries it gzipped (inflated by the browser).
+    if (clip === 'stored.spt') assert.match(fs.readFileSync(html, 'utf8'), /id="spt-clip" data-encoding="gzip"/);
     const { page, errors } = await openPlayer(context, html);
     const info = await page.evaluate(async () => {
       const el = document.querySelector('spt-player');
@@ -140,7 +142,10 @@ try {
   assert.ok(!fs.existsSync(w('damaged.html')), 'no page written for a damaged file');
   const native = nativeError(w('damaged.spt'), 2);
   const good = fs.readFileSync(w('clip.html'), 'utf8');
-  fs.writeFileSync(w('damaged.html'), good.replace(bytes.toString('base64'), damaged.toString('base64'))
+  const clipElement = /<script type="application\/octet-stream" id="spt-clip"[^>]*>[^<]*<\/script>/;
+  assert.match(good, clipElement, 'clip.html holds the clip in a <script id="spt-clip">');
+  fs.writeFileSync(w('damaged.html'), good
+    .replace(clipElement, `<script type="application/octet-stream" id="spt-clip">${damaged.toString('base64')}</script>`)
     .replace(' autoplay loop>', '>'));
   {
     const { page } = await openPlayer(context, w('damaged.html'));
