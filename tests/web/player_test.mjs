@@ -124,6 +124,26 @@ try {
               `${clip}: frames shown in order: ${played.shown}`);
     assert.ok(played.ms >= 7 * 40 - 20, `${clip}: 8 frames at 25 fps took ${played.ms} ms`);
     console.log(`ok: ${clip} played frames ${played.shown.join(' ')} in ${played.ms.toFixed(0)} ms`);
+    // Keys: arrows step a frame, Shift+arrow ten (clamped), Home/End, space plays and pauses.
+    await page.evaluate(() => document.querySelector('spt-player').seek(3));
+    await page.focus('spt-player');
+    const frameAfter = async (key) => {
+      await page.keyboard.press(key);
+      // A key's seek() is drawn within a few tasks; an animation frame later it has been.
+      return page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => setTimeout(() =>
+        resolve(document.querySelector('spt-player').frame), 0))));
+    };
+    assert.equal(await frameAfter('ArrowRight'), 4, 'ArrowRight steps one frame');
+    assert.equal(await frameAfter('ArrowLeft'), 3, 'ArrowLeft steps back');
+    assert.equal(await frameAfter('Shift+ArrowRight'), 7, 'Shift+ArrowRight steps ten, clamped to the last frame');
+    assert.equal(await frameAfter('Home'), 0);
+    assert.equal(await frameAfter('End'), 7);
+    await page.keyboard.press('Home');
+    await page.keyboard.press(' ');
+    assert.equal(await page.evaluate(() => document.querySelector('spt-player').playing), true, 'space plays');
+    await page.keyboard.press(' ');
+    assert.equal(await page.evaluate(() => document.querySelector('spt-player').playing), false, 'space pauses');
+    console.log(`ok: ${clip} keys (arrows, Shift+arrows, Home, End, space)`);
     assert.deepEqual(errors, [], `${clip}: errors on the page`);
     await page.close();
   }
