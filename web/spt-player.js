@@ -11,27 +11,37 @@
 import { loadSptCore, SptError } from './spt-core.js';
 
 // Where the WebAssembly module comes from: globalThis.SPT_PLAYER_WASM (bytes or a URL) if a
-// page sets it; else the base64 text of an element with id "spt-player-wasm" (the
-// self-contained page of `spt export -o page.html`); else spt_core.wasm beside this file.
+// page sets it; else the element with id "spt-player-wasm" (the self-contained page of
+// `spt export -o page.html`); else spt_core.wasm beside this file.
+let inlineWasm = null;
 function wasmSource() {
-  if (globalThis.SPT_PLAYER_WASM) return globalThis.SPT_PLAYER_WASM;
+  if (globalThis.SPT_PLAYER_WASM) return Promise.resolve(globalThis.SPT_PLAYER_WASM);
   const inline = document.getElementById('spt-player-wasm');
-  if (inline) return (globalThis.SPT_PLAYER_WASM = base64Bytes(inline.textContent));
-  return new URL('spt_core.wasm', import.meta.url);
+  if (inline) return (inlineWasm ??= inlineBytes(inline));
+  return Promise.resolve(new URL('spt_core.wasm', import.meta.url));
 }
 
-// src="#id": the clip is base64 text inside the element with that id (self-contained pages).
+// src="#id": the clip is inside the element with that id (self-contained pages).
 async function clipBytes(src) {
   if (src instanceof ArrayBuffer || ArrayBuffer.isView(src)) return src;
   src = String(src);
   if (src.startsWith('#')) {
     const holder = document.getElementById(src.slice(1));
     if (!holder) throw new SptError(`${src}: no element with that id holds the clip`, 'i/o error');
-    return base64Bytes(holder.textContent);
+    return inlineBytes(holder);
   }
   const response = await fetch(src).catch((e) => { throw new SptError(`${src}: ${e.message}`, 'i/o error'); });
   if (!response.ok) throw new SptError(`${src}: ${response.status} ${response.statusText}`, 'i/o error');
   return response.arrayBuffer();
+}
+
+// The bytes an inline element holds: its text in base64, gzipped first when it has
+// data-encoding="gzip" (inflated by the browser's DecompressionStream).
+async function inlineBytes(holder) {
+  const bytes = base64Bytes(holder.textContent);
+  if (holder.dataset.encoding !== 'gzip') return bytes;
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+  return new Uint8Array(await new Response(stream).arrayBuffer());
 }
 
 export function base64Bytes(text) {
@@ -125,7 +135,7 @@ export class SptPlayer extends HTMLElement {
     this._showError(null);
     this._ready = (async () => {
       try {
-        const [core, bytes] = await Promise.all([loadSptCore(wasmSource()), clipBytes(src)]);
+        const [core, bytes] = await Promise.all([wasmSource().then(loadSptCore), clipBytes(src)]);
         if (generation !== this._generation) throw new SptError('superseded by a newer load', 'bad state');
         this._clip = core.open(bytes);
         this._canvas.width = this._clip.width;

@@ -14,6 +14,8 @@
 #include <thread>
 #if defined(__x86_64__)
 #include <immintrin.h>
+#elif defined(__wasm_simd128__) && defined(__SSE2__)
+#include <emmintrin.h>  // emscripten's SSE2 on WebAssembly SIMD (copy_rows; web/CMakeLists.txt)
 #endif
 
 #include "raster_cull.hpp"

@@ -5,6 +5,7 @@
 import assert from 'node:assert/strict';
 import { execFileSync, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
+import http from 'node:http';
 import path from 'node:path';
 import { launch, openPlayer } from './chromium.mjs';
 
@@ -92,6 +93,8 @@ try {
   for (const clip of ['clip.spt', 'stored.spt']) {
     const html = w(clip.replace('.spt', '.html'));
     run('export', w(clip), '-o', html);
+    // The stored mode compresses well: its page carries it gzipped (inflated by the browser).
+    if (clip === 'stored.spt') assert.match(fs.readFileSync(html, 'utf8'), /id="spt-clip" data-encoding="gzip"/);
     const { page, errors } = await openPlayer(context, html);
     const info = await page.evaluate(async () => {
       const el = document.querySelector('spt-player');
@@ -122,8 +125,69 @@ try {
               `${clip}: frames shown in order: ${played.shown}`);
     assert.ok(played.ms >= 7 * 40 - 20, `${clip}: 8 frames at 25 fps took ${played.ms} ms`);
     console.log(`ok: ${clip} played frames ${played.shown.join(' ')} in ${played.ms.toFixed(0)} ms`);
+    // Keys: arrows step a frame, Shift+arrow ten (clamped), Home/End, space plays and pauses.
+    await page.evaluate(() => document.querySelector('spt-player').seek(3));
+    await page.focus('spt-player');
+    const frameAfter = async (key) => {
+      await page.keyboard.press(key);
+      // A key's seek() is drawn within a few tasks; an animation frame later it has been.
+      return page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => setTimeout(() =>
+        resolve(document.querySelector('spt-player').frame), 0))));
+    };
+    assert.equal(await frameAfter('ArrowRight'), 4, 'ArrowRight steps one frame');
+    assert.equal(await frameAfter('ArrowLeft'), 3, 'ArrowLeft steps back');
+    assert.equal(await frameAfter('Shift+ArrowRight'), 7, 'Shift+ArrowRight steps ten, clamped to the last frame');
+    assert.equal(await frameAfter('Home'), 0);
+    assert.equal(await frameAfter('End'), 7);
+    await page.keyboard.press('Home');
+    await page.keyboard.press(' ');
+    assert.equal(await page.evaluate(() => document.querySelector('spt-player').playing), true, 'space plays');
+    await page.keyboard.press(' ');
+    assert.equal(await page.evaluate(() => document.querySelector('spt-player').playing), false, 'space pauses');
+    console.log(`ok: ${clip} keys (arrows, Shift+arrows, Home, End, space)`);
     assert.deepEqual(errors, [], `${clip}: errors on the page`);
     await page.close();
+  }
+
+  // --web: the folder for a web server. Served from here, its index.html fetches the module
+  // and the clip beside it and draws the same frames.
+  run('export', w('clip.spt'), '-o', w('site'), '--web');
+  for (const f of ['index.html', 'clip.spt', 'spt-player.js', 'spt-core.js', 'spt_core.wasm', 'spt_core.wasm.gz'])
+    assert.ok(fs.existsSync(path.join(w('site'), f)), `--web wrote site/${f}`);
+  assert.deepEqual(fs.readFileSync(path.join(w('site'), 'clip.spt')), fs.readFileSync(w('clip.spt')));
+  const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.spt': 'application/octet-stream' };
+  const server = http.createServer((req, res) => {
+    const file = path.join(w('site'), path.normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)));
+    if (!file.startsWith(w('site')) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
+      res.writeHead(404).end();
+      return;
+    }
+    res.writeHead(200, { 'content-type': types[path.extname(file)] ?? 'application/octet-stream' }).end(fs.readFileSync(file));
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  try {
+    const page = await context.newPage();
+    await page.goto(`http://127.0.0.1:${server.address().port}/index.html`);
+    const b64 = await page.evaluate(async () => {
+      await customElements.whenDefined('spt-player');
+      const el = document.querySelector('spt-player');
+      await el.ready;
+      el.pause();
+      await el.seek(5);
+      const px = el.canvas.getContext('2d').getImageData(0, 0, el.canvas.width, el.canvas.height).data;
+      let s = '';
+      for (let i = 0; i < px.length; i += 0x8000) s += String.fromCharCode.apply(null, px.subarray(i, i + 0x8000));
+      return btoa(s);
+    });
+    const got = Buffer.from(b64, 'base64');
+    const want = ppm(w('ref.5.ppm'));
+    let bad = 0;
+    for (let i = 0, j = 0; j < want.length; i += 4, j += 3) if (got[i] !== want[j] || got[i + 1] !== want[j + 1] || got[i + 2] !== want[j + 2]) ++bad;
+    assert.equal(bad, 0, `served --web page, frame 5: ${bad} pixels differ from spt render`);
+    console.log('ok: the --web folder, served over http, draws frame 5 identical to spt render');
+    await page.close();
+  } finally {
+    server.close();
   }
 
   // A damaged inter frame (a byte of frame 2's payload flipped): spt export refuses the file;
@@ -140,7 +204,10 @@ try {
   assert.ok(!fs.existsSync(w('damaged.html')), 'no page written for a damaged file');
   const native = nativeError(w('damaged.spt'), 2);
   const good = fs.readFileSync(w('clip.html'), 'utf8');
-  fs.writeFileSync(w('damaged.html'), good.replace(bytes.toString('base64'), damaged.toString('base64'))
+  const clipElement = /<script type="application\/octet-stream" id="spt-clip"[^>]*>[^<]*<\/script>/;
+  assert.match(good, clipElement, 'clip.html holds the clip in a <script id="spt-clip">');
+  fs.writeFileSync(w('damaged.html'), good
+    .replace(clipElement, `<script type="application/octet-stream" id="spt-clip">${damaged.toString('base64')}</script>`)
     .replace(' autoplay loop>', '>'));
   {
     const { page } = await openPlayer(context, w('damaged.html'));

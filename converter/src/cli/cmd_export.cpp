@@ -32,7 +32,8 @@ int cmd_export(int argc, char** argv) {
               "spt export IN.spt -o OUT.json | -o OUT.svg | -o OUT.####.svg [--frames RANGE] | -o OUT.html | -o DIR/ --web");
     args.positional("IN.spt", "the .spt file to export")
         .option("output", "OUT", "OUT.json: the JSON stroke list (importers/README.md), every frame as stored; "
-                                 "OUT.svg: one SVG per frame, with #### (or %04d) in the name for several frames", 'o')
+                                 "OUT.svg: one SVG per frame, with #### (or %04d) in the name for several frames; "
+                                 "OUT.html: one self-contained page that plays the clip (web/README.md)", 'o')
         .option("frames", "RANGE", "SVG only: the frames to export (\"0-10,20\"; 0-based)")
         .flag("web", "write DIR/ for a web server: the player (web/README.md), its WebAssembly module, the clip and "
                      "index.html (OUT.html instead: one self-contained page that plays offline)")

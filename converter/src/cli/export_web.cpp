@@ -4,6 +4,7 @@
 #include "cli/export_web.hpp"
 
 #include <OpenImageIO/strutil.h>
+#include <zlib.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -67,16 +68,41 @@ std::string page_head(const std::string& title) {
            html_escape(title) + "</title>\n<style>" + kPageStyle + "</style>\n";
 }
 
-// One page: the clip and the module as base64 text in inert <script> elements, and the two ES
-// modules joined into one inline module (the player's import of spt-core.js dropped).
+// `data` as a gzip stream (what the browser's DecompressionStream("gzip") inflates); empty if
+// zlib fails.
+std::string gzip(std::string_view data) {
+    z_stream z{};
+    if (deflateInit2(&z, 9, Z_DEFLATED, 15 + 16, 9, Z_DEFAULT_STRATEGY) != Z_OK) return {};
+    std::string out(deflateBound(&z, uLong(data.size())), '\0');
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
+    z.avail_in = uInt(data.size());
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = uInt(out.size());
+    const int rc = deflate(&z, Z_FINISH);
+    out.resize(z.total_out);
+    deflateEnd(&z);
+    return rc == Z_STREAM_END ? out : std::string();
+}
+
+// The clip as an inert <script> element: gzipped when that saves a tenth (stored-mode clips
+// shrink several times; range-coded ones hardly at all).
+std::string clip_element(const std::string& clip) {
+    const std::string z = gzip(clip);
+    const bool packed = !z.empty() && z.size() < clip.size() - clip.size() / 10;
+    return std::string("<script type=\"application/octet-stream\" id=\"spt-clip\"") +
+           (packed ? " data-encoding=\"gzip\">" : ">") + OIIO::Strutil::base64_encode(packed ? z : clip) + "</script>\n";
+}
+
+// One page: the clip and the gzipped module as base64 text in inert <script> elements, and the
+// two ES modules joined into one inline module (the player's import of spt-core.js dropped).
 std::string self_contained_page(const std::string& title, const std::string& clip) {
     std::string player(asset("spt-player.js"));
     const std::string import_line = "import { loadSptCore, SptError } from './spt-core.js';\n";
     if (size_t p = player.find(import_line); p != std::string::npos) player.erase(p, import_line.size());
     std::string page = page_head(title) + "</head>\n<body>\n<spt-player src=\"#spt-clip\" autoplay loop></spt-player>\n";
-    page += "<script type=\"application/octet-stream\" id=\"spt-clip\">" + OIIO::Strutil::base64_encode(clip) + "</script>\n";
-    page += "<script type=\"application/octet-stream\" id=\"spt-player-wasm\">" +
-            OIIO::Strutil::base64_encode(asset("spt_core.wasm")) + "</script>\n";
+    page += clip_element(clip);
+    page += "<script type=\"application/octet-stream\" id=\"spt-player-wasm\" data-encoding=\"gzip\">" +
+            OIIO::Strutil::base64_encode(asset("spt_core.wasm.gz")) + "</script>\n";
     page += "<script type=\"module\">\n" + script_safe(asset("spt-core.js")) + "\n" + script_safe(player) + "</script>\n";
     return page + "</body>\n</html>\n";
 }
@@ -119,7 +145,9 @@ int export_web(const std::string& in, const std::string& out, bool folder) {
     if (fs::exists(out, ec) && !fs::is_directory(out, ec)) return fail(out + ": exists and is not a folder (--web writes a folder)");
     fs::create_directories(out, ec);
     if (ec) return fail(out + ": cannot create the folder: " + ec.message());
-    const std::string clip_name = fs::path(in).filename().string();
+    std::string clip_name = fs::path(in).filename().string();
+    for (const auto& a : web::player_assets())
+        if (clip_name == a.name || clip_name == "index.html") clip_name = "clip.spt";  // never over a player file
     for (const auto& a : web::player_assets())
         if (Status s = import::write_file_atomic((fs::path(out) / a.name).string(), std::string(a.bytes)); !s)
             return fail(s.error().message);
