@@ -21,7 +21,7 @@ table="template fuzz/fuzz_template fuzz/corpus/template 4096 10
 roi fuzz/fuzz_roi fuzz/corpus/roi 8192 10
 motion fuzz/fuzz_motion fuzz/corpus/motion 4096 10
 json fuzz_importers/fuzz_importers_json fuzz_importers/corpus/json 65536 10
-geometrize fuzz_importers/fuzz_importers_geometrize fuzz_importers/corpus/geometrize 65536 10
+geometrize fuzz_importers/fuzz_importers_geometrize fuzz_importers/corpus/geometrize 8192 10
 strokes fuzz/fuzz_strokes fuzz/corpus/strokes 4096 10
 svg fuzz_importers/fuzz_importers_svg fuzz_importers/corpus/svg 65536 10
 container fuzz/fuzz_container fuzz/corpus/container 32768 10"

@@ -70,7 +70,7 @@ AtomicFile& AtomicFile::operator=(AtomicFile&& o) noexcept {
     return *this;
 }
 
-Result<AtomicFile> AtomicFile::create(const std::string& path) {
+Result<AtomicFile> AtomicFile::create(const std::string& path, bool allow_unnamed) {
     AtomicFile a;
     a.path_ = path;
     if (path.empty() || path.back() == '/') return io_error(path, "is a folder, not a file name", 0);
@@ -79,10 +79,14 @@ Result<AtomicFile> AtomicFile::create(const std::string& path) {
     const std::string dir = folder_of(path);
     int fd = -1;
 #if defined(__linux__) && defined(O_TMPFILE)
-    fd = ::open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
-    // EISDIR: a kernel without O_TMPFILE; EOPNOTSUPP: a file system without it.
-    if (fd < 0 && errno != EISDIR && errno != EOPNOTSUPP && errno != EINVAL)
-        return io_error(path, "cannot create a file in " + dir, errno);
+    if (allow_unnamed) {
+        fd = ::open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
+        // EISDIR: a kernel without O_TMPFILE; EOPNOTSUPP: a file system without it.
+        if (fd < 0 && errno != EISDIR && errno != EOPNOTSUPP && errno != EINVAL)
+            return io_error(path, "cannot create a file in " + dir, errno);
+    }
+#else
+    (void)allow_unnamed;
 #endif
     if (fd < 0) {
         fd = open_exclusive(path, a.temp_);

@@ -132,7 +132,10 @@ std::vector<Span> spans(int type, const std::vector<double>& d, uint32_t w, uint
             const int32_t x = int32_t(d[0]), y = int32_t(d[1]);
             const float ry = float(d[3]);
             for (int32_t dy = 0; dy < ry; ++dy) {
-                const int32_t v = int32_t(std::sqrt(ry * ry - float(dy * dy)) * aspect);
+                // int64 square: dy reaches 2^20. A denormal ry makes aspect infinite and fv NaN;
+                // past 2^22 (|x| <= 2^20) every v gives the same clamped span.
+                const float fv = std::sqrt(ry * ry - float(int64_t(dy) * dy)) * aspect;
+                const int32_t v = std::isnan(fv) ? 0 : fv >= float(1 << 22) ? (1 << 22) : fv <= -float(1 << 22) ? -(1 << 22) : int32_t(fv);
                 const int32_t x1 = std::max(x - v, 0), x2 = std::min(x + v, bw - 1);
                 out.push_back({y - dy, x1, x2});
                 if (dy > 0) out.push_back({y + dy, x1, x2});

@@ -26,6 +26,7 @@ struct Dir {
     }
     ~Dir() { std::error_code ec; fs::remove_all(path, ec); }
     std::string operator/(const std::string& n) const { return (path / n).string(); }
+    using Names = std::vector<std::string>;
     std::vector<std::string> names() const {
         std::vector<std::string> v;
         for (const auto& e : fs::directory_iterator(path)) v.push_back(e.path().filename().string());
@@ -150,4 +151,31 @@ TEST(AtomicFile, WriterAbortLeavesNothing) {
     ASSERT_TRUE((*w)->append(f).ok());
     (*w)->abort();
     EXPECT_TRUE(d.names().empty());
+}
+
+// Where O_TMPFILE is missing: an exclusively created random name beside the destination, which
+// a symlink planted at any name cannot redirect, renamed into place; nothing left on discard.
+TEST(AtomicFile, NamedFallbackIsExclusiveAndCleansUp) {
+    Dir d;
+    { std::ofstream(d / "victim.txt") << "victim"; }
+    fs::create_symlink("victim.txt", d / "o.bin");
+    auto f = AtomicFile::create(d / "o.bin", false);
+    ASSERT_TRUE(f.ok()) << f.error().message;
+    EXPECT_FALSE(f->unnamed());
+    const std::vector<std::string> during = d.names();
+    ASSERT_EQ(during.size(), 3u);
+    const std::string temp = during[0];  // ".o.bin.XXXXXXXXXXXX.tmp" sorts first
+    EXPECT_EQ(temp.rfind(".o.bin.", 0), 0u) << temp;
+    EXPECT_EQ(temp.size(), std::string(".o.bin.").size() + 12 + 4) << temp;
+    EXPECT_FALSE(fs::is_symlink(d.path / temp));
+    std::fputs("new", f->stream());
+    ASSERT_TRUE(f->commit().ok());
+    EXPECT_EQ(slurp(d / "victim.txt"), "victim");
+    EXPECT_EQ(slurp(d / "o.bin"), "new");
+    EXPECT_FALSE(fs::is_symlink(d / "o.bin"));
+    EXPECT_EQ(d.names(), (std::vector<std::string>{"o.bin", "victim.txt"}));
+    auto g = AtomicFile::create(d / "p.bin", false);
+    ASSERT_TRUE(g.ok());
+    g->discard();
+    EXPECT_EQ(d.names(), (std::vector<std::string>{"o.bin", "victim.txt"}));
 }

@@ -102,11 +102,21 @@ TEST(HostileCli, RenderOfADamagedFileWritesWhatItCanNamesTheFrameAndFails) {
     EXPECT_HAS(r.err, "claims 4294967295 bytes");
     EXPECT_HAS(r.err, "wrote 1 of 5 frames");
     EXPECT_EQ(names(d), Names{"o.0000.png"});
-    // Asking only for what survives succeeds.
+    // Asking only for what survives succeeds; asking for a lost frame fails, writing nothing.
     TempDir e;
     r = run_spt(e, {"render", input("frame1_length_ffffffff.spt"), "-o", e.file("o.png"), "--frame", "0"});
     EXPECT_EQ(r.code, 0) << r.err;
-    EXPECT_EQ(names(e), Names{"o.png"});
+    r = run_spt(e, {"render", input("frame1_length_ffffffff.spt"), "-o", e.file("d.png")});
+    EXPECT_EQ(r.code, 0) << "a single image is frame 0: " << r.err;
+    EXPECT_EQ(names(e), (Names{"d.png", "o.png"}));
+    r = run_spt(e, {"render", input("frame1_length_ffffffff.spt"), "-o", e.file("x.png"), "--frame", "3"});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "frame 1 (byte offset 717) could not be rendered");
+    EXPECT_EQ(names(e), (Names{"d.png", "o.png"}));
+    r = run_spt(e, {"render", input("frame1_length_ffffffff.spt"), "-o", e.file("s.####.png"), "--frames", "0-2"});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_HAS(r.err, "wrote 1 of 3 frames");
+    EXPECT_EQ(names(e), (Names{"d.png", "o.png", "s.0000.png"}));
 }
 
 TEST(HostileCli, TruncatedFileRendersItsWholeFramesAndFails) {

@@ -83,3 +83,15 @@ TEST(HostileImport, ValidUtf8MetadataStillImports) {
     ASSERT_TRUE(r.ok()) << r.error().message;
     EXPECT_EQ(r->info.metadata.at(0).second, "caf\xC3\xA9 \xF0\x9F\x8E\xA8");
 }
+
+// Found by the instrumented fuzz target: the geometrize ellipse rasteriser squared its row in
+// int (46341^2 overflows: an ellipse of ry 60000) and turned NaN into an int (a denormal ry
+// made rx/ry infinite). Both import now; the inputs are also in the geometrize corpus.
+TEST(HostileImport, GeometrizeEllipsesOfExtremeRadiiImport) {
+    for (const char* ry : {"60000", "1e-40"}) {
+        auto r = load("geometrize-json", std::string(R"({"shapes": [{"type": 1, "data": [0, 0, 63, 47], "color": [255, 255, 255, 255]},)") +
+                                             R"({"type": 8, "data": [10, 10, 5, )" + ry + R"(], "color": [1, 2, 3, 128]}]})");
+        ASSERT_TRUE(r.ok()) << ry << ": " << r.error().message;
+        EXPECT_EQ(r->info.header.width, 64u);
+    }
+}

@@ -149,7 +149,10 @@ int cmd_render(int argc, char** argv) {
     if (beyond && !frames_lost)
         return fail(path + ": has frames 0-" + std::to_string(last) + "; the range asks for frame " +
                     std::to_string(std::max(single, range->spans.empty() ? 0L : range->spans.back().second)));
-    const bool fail_after = frames_lost && (beyond || (!args.has("frames") && !args.has("frame")) || todo.empty());
+    // Lost frames were asked for: named past the last one found, or "every frame" (a sequence or
+    // a video without --frames; a single image without --frame is frame 0 only).
+    const bool all_asked = (sequence || video) && !args.has("frames");
+    const bool fail_after = frames_lost && (beyond || all_asked || todo.empty());
     if (todo.empty() || todo.front() > last) {
         if (fail_after) return fail(lost + "; nothing written");
         return fail(path + ": has frames 0-" + std::to_string(last) + "; nothing to render in that range");
@@ -185,9 +188,12 @@ int cmd_render(int argc, char** argv) {
     }
     if (video && done == 0) vout.discard();
     else if (video && !vout.finish(err)) return fail(err);
-    const std::string summary = "wrote " + std::to_string(done) + " of " +
-                                std::to_string(frames_lost && h.frame_count != kUnknownFrameCount
-                                                   ? size_t(h.frame_count) : todo.size()) + " frames";
+    // Of the frames asked for: where frames were lost and the header gives the count, the
+    // request counted against what the file should hold.
+    size_t asked = todo.size();
+    if (frames_lost && h.frame_count != kUnknownFrameCount && (sequence || video))
+        asked = range->frames_within(0, long(h.frame_count) - 1).size();
+    const std::string summary = "wrote " + std::to_string(done) + " of " + std::to_string(asked) + " frames";
     if (!first_bad.empty() || fail_after) {
         progress.finish(false, summary);
         return fail((first_bad.empty() ? lost : first_bad) + "; " + summary);

@@ -19,8 +19,9 @@ namespace spt {
 class AtomicFile {
 public:
     // Creates the temporary in the folder of `path`. Fails (naming `path`) when the folder is
-    // missing or not writable, or when `path` is a folder.
-    static Result<AtomicFile> create(const std::string& path);
+    // missing or not writable, or when `path` is a folder. `allow_unnamed` false takes the
+    // named fallback even where O_TMPFILE works (its tests use it).
+    static Result<AtomicFile> create(const std::string& path, bool allow_unnamed = true);
 
     AtomicFile() = default;
     AtomicFile(AtomicFile&& o) noexcept { *this = std::move(o); }
