@@ -7,7 +7,7 @@
 //   await el.seek(n)   resolves once frame n is drawn (rejects with libspt's message)
 //   el.play(), el.pause(), el.frameCount, el.fps, el.frame, el.canvas, el.loop, el.speed
 //   await el.load(urlOrBytes), await el.ready
-//   events: load, frame (detail.frame), complete, error (detail.message)
+//   events: load, frame (detail.frame), play, pause, complete, error and loaderror (detail.message)
 import { loadSptCore, SptError } from './spt-core.js';
 
 // Where the WebAssembly module comes from: globalThis.SPT_PLAYER_WASM (bytes or a URL) if a
@@ -143,7 +143,10 @@ export class SptPlayer extends HTMLElement {
         this._scrub.max = String(this._clip.frameCount - 1);
         this._draw(0);
       } catch (e) {
-        if (generation === this._generation) this._fail(e);
+        if (generation === this._generation) {
+          this._fail(e);
+          this.dispatchEvent(new CustomEvent('loaderror', { detail: { message: e.message, code: e.code } }));
+        }
         throw e;
       }
       this.dispatchEvent(new CustomEvent('load', { detail: { frameCount: this.frameCount, fps: this.fps } }));
@@ -173,9 +176,11 @@ export class SptPlayer extends HTMLElement {
     this._button.textContent = 'pause';
     this._restartClock();
     this._raf = requestAnimationFrame(this._tick);
+    this.dispatchEvent(new CustomEvent('play'));
   }
 
   pause() {
+    if (this._playing) this.dispatchEvent(new CustomEvent('pause'));
     this._playing = false;
     this._button.textContent = 'play';
     if (this._raf) cancelAnimationFrame(this._raf);

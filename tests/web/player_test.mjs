@@ -237,11 +237,14 @@ try {
       const want = spawnSync(spt, ['info', w(name + '.spt')]).stderr.toString();
       const m = await page.evaluate(async (b64) => {
         const el = document.querySelector('spt-player');
-        try { await el.load(Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))); return null; } catch (e) { return [e.message, el.errorMessage]; }
+        let event = null;
+        el.addEventListener('loaderror', (e) => { event = e.detail.message; }, { once: true });
+        try { await el.load(Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))); return null; } catch (e) { return [e.message, el.errorMessage, event]; }
       }, data.toString('base64'));
       assert.ok(m, `${name}: load() resolved`);
       assert.ok(want.includes(m[0]), `${name}: the rejection "${m[0]}" is libspt's message: ${want}`);
       assert.equal(m[1], m[0], `${name}: the element shows the message`);
+      assert.equal(m[2], m[0], `${name}: a loaderror event carries the message`);
       console.log(`ok: ${name} rejected with libspt's message: ${m[0]}`);
     }
     await page.close();
