@@ -94,6 +94,7 @@ public:
         else for (const auto& m : members) dup = dup || m.first == k;
         if (dup) return fail("duplicate key \"" + k + "\"", Code::Corrupt);
         pending_key_ = std::move(k);
+        in_value_ = true;
         return true;
     }
     bool parse_error(std::size_t position, const std::string& last_token, const nlohmann::detail::exception& ex) {
@@ -105,6 +106,7 @@ public:
         if (ex.id == 406) what = "number out of range: " + last_token;
         else if (what.find("unexpected end of input") != std::string::npos) what = "unexpected end of document (" + what + ")";
         else if (values_ > 0 && open_.empty()) what = "unexpected text after the JSON value (" + what + ")";
+        else if (what.find("UTF-8") != std::string::npos) what = utf8_context() + " is not valid UTF-8 (" + what + ")";
         const size_t offset = position > 0 ? std::min(position - 1, text_.size()) : 0;
         return fail_at(offset, what, Code::Corrupt);
     }
@@ -119,6 +121,7 @@ private:
     ParseLimits lim_;
     std::vector<Level> open_;
     std::string pending_key_;
+    bool in_value_ = false;  // after a key, before its value
     size_t values_ = 0;
     size_t scanned_ = 0;  // lines counted up to here
     uint32_t line_ = 1;
@@ -139,6 +142,25 @@ private:
     }
     bool fail(const std::string& what, Code code) { return fail_at(here(), what, code); }
 
+    // The name of the open container at `depth` (JSON text is UTF-8: the first place a text may
+    // not be is named by its key, as users wrote it).
+    std::string name_of(size_t depth) const {
+        if (depth == 0) return "the document";
+        const Value* parent = open_[depth - 1].value;
+        if (parent->type == Type::Object) return "\"" + parent->members.back().first + "\"";
+        return name_of(depth - 1) + "[" + std::to_string(parent->items.size() - 1) + "]";
+    }
+    // What the lexer was reading when it met a byte that is not UTF-8: a key's value, a key, an
+    // array item or the document.
+    std::string utf8_context() const {
+        if (open_.empty()) return "the document";
+        const Value* here = open_.back().value;
+        const std::string in = open_.size() > 1 ? " in " + name_of(open_.size() - 1) : "";
+        if (here->type == Type::Object)
+            return in_value_ ? "the value of key \"" + pending_key_ + "\"" + in : "a key of " + name_of(open_.size() - 1);
+        return "an item of " + name_of(open_.size() - 1);
+    }
+
     // A new value in the open container (or the root), on the line where its token lies: no
     // token spans a line, and the byte read last is the token's own or, after a number, the
     // one following it (excluded here).
@@ -151,6 +173,7 @@ private:
             v = &open_.back().value->items.emplace_back();
         } else {
             v = &open_.back().value->members.emplace_back(std::move(pending_key_), Value()).second;
+            in_value_ = false;
         }
         v->type = t;
         v->line = line_at(here());

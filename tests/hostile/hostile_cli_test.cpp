@@ -182,7 +182,7 @@ TEST(HostileCli, InvalidUtf8IsRefusedAtImportAndExport) {
     TempDir d;
     auto r = run_spt(d, {"import", input("strokes_bad_utf8.json"), "-o", d.file("o.spt")});
     EXPECT_EQ(r.code, 1);
-    EXPECT_HAS(r.err, "metadata key \"title\": the value is not valid UTF-8");
+    EXPECT_HAS(r.err, "strokes_bad_utf8.json:1:105: the value of key \"title\" in \"metadata\" is not valid UTF-8");
     r = run_spt(d, {"export", input("meta_not_utf8.spt"), "-o", d.file("o.json")});
     EXPECT_EQ(r.code, 1);
     EXPECT_HAS(r.err, "metadata key \"painter.seed\" holds bytes that are not UTF-8");
