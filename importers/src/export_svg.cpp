@@ -11,7 +11,6 @@
 
 #include "spt_import/codec.hpp"
 #include "spt_import/export.hpp"
-#include "spt_import/xml.hpp"
 
 namespace spt::import {
 

@@ -38,7 +38,7 @@ bool sniff(const std::string&, std::string_view head) {
     return head.substr(i, 8) == "\"shapes\"";
 }
 
-Result<Document> load(const std::string& path, std::string_view text, const ImportOptions& opts) {
+Result<Document> load(const std::string& path, std::string text, const ImportOptions& opts) {
     auto root = json::parse(text, path);
     if (!root) return root.error();
     if (!root->is_object()) return at(path, *root, "expected an object with \"shapes\"");

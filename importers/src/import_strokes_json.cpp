@@ -458,7 +458,7 @@ bool sniff(const std::string& path, std::string_view head) {
     return p != std::string_view::npos;
 }
 
-Result<Document> load(const std::string& path, std::string_view text, const ImportOptions& opts) {
+Result<Document> load(const std::string& path, std::string text, const ImportOptions& opts) {
     auto root = json::parse(text, path);
     if (!root) return root.error();
     Ctx c(path, opts.limits);

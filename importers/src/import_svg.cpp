@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <memory>
 
 #include "spt_import/geometrize.hpp"
 #include "spt_import/importer.hpp"
@@ -14,6 +16,8 @@
 namespace spt::import {
 
 namespace {
+
+using Node = pugi::xml_node;
 
 // 8 x 8 samples: within 0.2 dB of 16 x 16 against primitive's PNGs, a quarter of the work.
 constexpr uint8_t kSvgSupersample = 8;
@@ -31,20 +35,21 @@ class SvgReader {
 public:
     SvgReader(const std::string& src, const ImportOptions& o) : src_(src), opts_(o) {}
 
-    Result<Document> run(std::string_view text) {
-        auto root = xml::parse(text, src_);
-        if (!root) return root.error();
-        if (root->local_name() != "svg") return err(*root, "the root element is <" + root->name + ">, not <svg>");
+    Result<Document> run(std::string text) {
+        auto parsed = xml::Document::parse(std::move(text), src_);
+        if (!parsed) return parsed.error();
+        xml_ = std::move(*parsed);
+        const Node root = xml_->root();
+        if (xml::local_name(root) != "svg") return err(root, std::string("the root element is <") + root.name() + ">, not <svg>");
         Mat2x3 base;
-        if (!canvas(*root, base)) return e_;
+        if (!canvas(root, base)) return e_;
         doc_.info.templates = default_templates();
         // geometrize's SVG (its exporter's signature: SVG Tiny 1.2 with an https namespace)
         // holds the pixel-index geometry of its own aliased rasteriser: emulate that
         // (spt_import/geometrize.hpp). Other SVG renderers (browsers, primitive's PNG output)
         // anti-alias: sample each pixel on a grid (SPEC.md 3.2) so that edges are as soft.
-        const xml::Attribute* profile = root->attr("baseProfile");
-        const xml::Attribute* ns = root->attr("xmlns");
-        geometrize_ = profile && profile->value == "tiny" && ns && ns->value == "https://www.w3.org/2000/svg";
+        geometrize_ = std::string_view(root.attribute("baseProfile").value()) == "tiny" &&
+                      std::string_view(root.attribute("xmlns").value()) == "https://www.w3.org/2000/svg";
         if (geometrize_) {
             auto r = Renderer::create(doc_.info.header, doc_.info.templates);
             if (!r) return r.error();
@@ -54,9 +59,12 @@ public:
             for (auto& t : doc_.info.templates) t.supersample = kSvgSupersample;
         }
         doc_.frames.resize(1);
+        // One stroke a shape, mostly: reserving spares the growth copies of a long list (pages
+        // that are never written are never resident).
+        doc_.frames[0].added.reserve(std::min<size_t>(xml_->elements(), opts_.limits.max_strokes_per_frame));
         Style st;
-        if (!style(*root, st)) return e_;
-        if (!children(*root, base, st, 0)) return e_;
+        if (!style(root, st)) return e_;
+        if (!children(root, base, st, 0)) return e_;
         doc_.report.background_stated = background_found_;
         if (opts_.background) doc_.info.header.background = *opts_.background;
         if (geometrize_) {
@@ -76,6 +84,7 @@ private:
     const std::string& src_;
     const ImportOptions& opts_;
     Document doc_;
+    std::unique_ptr<xml::Document> xml_;
     Error e_;
     bool any_stroke_ = false;  // a background rect is only recognised before the first stroke
     bool geometrize_ = false;
@@ -83,28 +92,28 @@ private:
     uint64_t differing_ = 0;
     bool background_found_ = false;
 
-    Error err(const xml::Element& el, const std::string& what) {
-        return make_error(Code::Corrupt, src_ + ":" + std::to_string(el.line) + ": <" + el.name + ">: " + what);
+    Error err(Node el, const std::string& what) {
+        return make_error(Code::Corrupt, src_ + ":" + std::to_string(xml_->line(el)) + ": <" + el.name() + ">: " + what);
     }
-    bool fail(const xml::Element& el, const std::string& what) { e_ = err(el, what); return false; }
+    bool fail(Node el, const std::string& what) { e_ = err(el, what); return false; }
 
     // A length: a number, optionally with "px" (other units and percentages are not supported).
-    bool length(const xml::Element& el, const char* name, double& out, bool required, double dflt = 0) {
-        const xml::Attribute* a = el.attr(name);
+    bool length(Node el, const char* name, double& out, bool required, double dflt = 0) {
+        const pugi::xml_attribute a = el.attribute(name);
         if (!a) {
             if (required) return fail(el, std::string("missing attribute ") + name);
             out = dflt;
             return true;
         }
-        std::string_view v = a->value;
+        std::string_view v = a.value();
         while (!v.empty() && v.back() == ' ') v.remove_suffix(1);
         if (v.size() > 2 && v.substr(v.size() - 2) == "px") v.remove_suffix(2);
-        if (!parse_number(v, out)) return fail(el, std::string("attribute ") + name + "=\"" + a->value + "\" is not a number (units other than px are not supported)");
+        if (!parse_number(v, out)) return fail(el, std::string("attribute ") + name + "=\"" + a.value() + "\" is not a number (units other than px are not supported)");
         return true;
     }
 
     // Numbers separated by whitespace and/or commas ("1,2 3-4" is 1, 2, 3, -4 as SVG allows).
-    bool numbers(const xml::Element& el, std::string_view s, std::vector<double>& out, const char* what) {
+    bool numbers(Node el, std::string_view s, std::vector<double>& out, const char* what) {
         size_t i = 0;
         while (i < s.size()) {
             while (i < s.size() && (s[i] == ' ' || s[i] == ',' || s[i] == '\t' || s[i] == '\n' || s[i] == '\r')) ++i;
@@ -126,10 +135,10 @@ private:
         return true;
     }
 
-    bool transform(const xml::Element& el, Mat2x3& m) {
-        const xml::Attribute* a = el.attr("transform");
+    bool transform(Node el, Mat2x3& m) {
+        const pugi::xml_attribute a = el.attribute("transform");
         if (!a) return true;
-        std::string_view s = a->value;
+        const std::string_view s = a.value();
         size_t i = 0;
         Mat2x3 t;
         for (;;) {
@@ -139,9 +148,9 @@ private:
             while (i < s.size() && std::isalpha((unsigned char)s[i])) ++i;
             std::string_view fn = s.substr(b, i - b);
             while (i < s.size() && std::isspace((unsigned char)s[i])) ++i;
-            if (i >= s.size() || s[i] != '(') return fail(el, "bad transform \"" + a->value + "\"");
+            if (i >= s.size() || s[i] != '(') return fail(el, "bad transform \"" + std::string(s) + "\"");
             size_t close = s.find(')', i);
-            if (close == std::string_view::npos) return fail(el, "unterminated transform \"" + a->value + "\"");
+            if (close == std::string_view::npos) return fail(el, "unterminated transform \"" + std::string(s) + "\"");
             std::vector<double> v;
             if (!numbers(el, s.substr(i + 1, close - i - 1), v, "transform")) return false;
             i = close + 1;
@@ -165,15 +174,15 @@ private:
         return true;
     }
 
-    bool canvas(const xml::Element& root, Mat2x3& base) {
+    bool canvas(Node root, Mat2x3& base) {
         double w = 0, h = 0;
         std::vector<double> vb;
-        if (const xml::Attribute* a = root.attr("viewBox")) {
-            if (!numbers(root, a->value, vb, "viewBox")) return false;
+        if (const pugi::xml_attribute a = root.attribute("viewBox")) {
+            if (!numbers(root, a.value(), vb, "viewBox")) return false;
             if (vb.size() != 4 || !(vb[2] > 0) || !(vb[3] > 0)) return fail(root, "viewBox must be \"min-x min-y width height\" with positive size");
         }
-        const bool has_w = root.attr("width") && root.attr("width")->value.find('%') == std::string::npos;
-        const bool has_h = root.attr("height") && root.attr("height")->value.find('%') == std::string::npos;
+        const bool has_w = root.attribute("width") && !std::strchr(root.attribute("width").value(), '%');
+        const bool has_h = root.attribute("height") && !std::strchr(root.attribute("height").value(), '%');
         if (has_w && !length(root, "width", w, true)) return false;
         if (has_h && !length(root, "height", h, true)) return false;
         if (!has_w) w = vb.empty() ? 0 : vb[2];
@@ -191,7 +200,7 @@ private:
         return true;
     }
 
-    bool opacity_value(const xml::Element& el, const std::string& name, std::string_view v, double& out) {
+    bool opacity_value(Node el, const std::string& name, std::string_view v, double& out) {
         bool pct = !v.empty() && v.back() == '%';
         if (pct) v.remove_suffix(1);
         if (!parse_number(v, out)) return fail(el, name + "=\"" + std::string(v) + "\" is not a number");
@@ -200,7 +209,7 @@ private:
         return true;
     }
 
-    bool property(const xml::Element& el, const std::string& name, std::string_view v, Style& st) {
+    bool property(Node el, const std::string& name, std::string_view v, Style& st) {
         while (!v.empty() && std::isspace((unsigned char)v.front())) v.remove_prefix(1);
         while (!v.empty() && std::isspace((unsigned char)v.back())) v.remove_suffix(1);
         if (v == "inherit") return true;
@@ -224,14 +233,14 @@ private:
         return true;
     }
 
-    bool style(const xml::Element& el, Style& st) {
+    bool style(Node el, Style& st) {
         static const char* props[] = {"fill", "fill-opacity", "opacity", "stroke", "stroke-opacity", "stroke-width"};
         for (const char* p : props)
-            if (const xml::Attribute* a = el.attr(p))
-                if (!property(el, p, a->value, st)) return false;
-        if (const xml::Attribute* a = el.attr("style")) {
+            if (const pugi::xml_attribute a = el.attribute(p))
+                if (!property(el, p, a.value(), st)) return false;
+        if (const pugi::xml_attribute a = el.attribute("style")) {
             // CSS declarations override presentation attributes.
-            std::string_view s = a->value;
+            std::string_view s = a.value();
             while (!s.empty()) {
                 size_t semi = s.find(';');
                 std::string_view decl = s.substr(0, semi);
@@ -244,9 +253,10 @@ private:
                 if (!property(el, std::string(k), decl.substr(colon + 1), st)) return false;
             }
         }
-        if (st.opacity < 1 && !el.children.empty()) {
+        if (st.opacity < 1 && el.first_child()) {
             size_t shapes = 0;
-            for (const auto& c : el.children) shapes += c.local_name() != "title" && c.local_name() != "desc";
+            for (Node c : el.children())
+                shapes += c.type() == pugi::node_element && xml::local_name(c) != "title" && xml::local_name(c) != "desc";
             if (shapes > 1) doc_.report.note("group opacity applied to each shape of the group (overlaps inside the group differ)");
         }
         return true;
@@ -258,7 +268,7 @@ private:
         return {st.fill.r, st.fill.g, st.fill.b, alpha(st.fill_opacity * st.opacity)};
     }
 
-    bool count_ok(const xml::Element& el) {
+    bool count_ok(Node el) {
         if (doc_.frames[0].added.size() >= opts_.limits.max_strokes_per_frame) return fail(el, "more shapes than the stroke limit");
         return true;
     }
@@ -270,7 +280,7 @@ private:
     }
 
     // geometrize's SVG element -> its shape type and data (pixel indices; see geometrize.hpp).
-    bool geometrize_shape(const xml::Element& el, std::string_view n, const Mat2x3& m, Rgba8 col) {
+    bool geometrize_shape(Node el, std::string_view n, const Mat2x3& m, Rgba8 col) {
         auto snap = [](double v) { const double r = std::round(v); return std::fabs(v - r) < 1e-3 ? r : v; };
         int type = 0;
         std::vector<double> d;
@@ -299,10 +309,10 @@ private:
                 d = {snap(x), snap(y), snap(sx), snap(sy), snap(deg < 0 ? deg + 360 : deg)};
             }
         } else {
-            const xml::Attribute* a = el.attr("points");
+            const pugi::xml_attribute a = el.attribute("points");
             if (!a) return fail(el, "missing attribute points");
             std::vector<double> v;
-            if (!numbers(el, a->value, v, "points")) return false;
+            if (!numbers(el, a.value(), v, "points")) return false;
             if (v.size() % 2 || v.size() < 6) return fail(el, "points needs at least three x, y pairs");
             for (size_t i = 0; i + 1 < v.size(); i += 2) {
                 double x, y;
@@ -321,12 +331,12 @@ private:
         return true;
     }
 
-    bool shape(const xml::Element& el, const Mat2x3& m, const Style& st) {
+    bool shape(Node el, const Mat2x3& m, const Style& st) {
         if (!count_ok(el)) return false;
         auto& out = doc_.frames[0].added;
         StrokeSink sink(out, doc_.report);
         if (!geometrize_) sink.set_polygon_supersample(kSvgSupersample);
-        const std::string_view n = el.local_name();
+        const std::string_view n = xml::local_name(el);
         const Rgba8 col = fill_color(st);
         if (geometrize_ && !st.fill_none && (n == "rect" || n == "circle" || n == "ellipse" || n == "polygon"))
             return geometrize_shape(el, n, m, col);
@@ -334,7 +344,7 @@ private:
             double x, y, w, h;
             if (!length(el, "x", x, false) || !length(el, "y", y, false) || !length(el, "width", w, true) || !length(el, "height", h, true)) return false;
             if (w < 0 || h < 0) return fail(el, "negative width or height");
-            if (el.attr("rx") || el.attr("ry")) doc_.report.note("rounded rectangle corners (rx, ry) ignored");
+            if (el.attribute("rx") || el.attribute("ry")) doc_.report.note("rounded rectangle corners (rx, ry) ignored");
             stroke_note(st);
             if (st.fill_none || w == 0 || h == 0) return true;
             // A first, opaque, axis-aligned rect covering the canvas is the background colour.
@@ -370,9 +380,9 @@ private:
                 if (!length(el, "x1", x1, false) || !length(el, "y1", y1, false) || !length(el, "x2", x2, false) || !length(el, "y2", y2, false)) return false;
                 v = {x1, y1, x2, y2};
             } else {
-                const xml::Attribute* a = el.attr("points");
+                const pugi::xml_attribute a = el.attribute("points");
                 if (!a) return fail(el, "missing attribute points");
-                if (!numbers(el, a->value, v, "points")) return false;
+                if (!numbers(el, a.value(), v, "points")) return false;
                 if (v.size() % 2) return fail(el, "points has an odd count of numbers");
             }
             std::vector<Point> pts;
@@ -396,26 +406,34 @@ private:
         return true;
     }
 
-    bool children(const xml::Element& parent, const Mat2x3& m, const Style& st, int depth) {
-        for (const auto& c : parent.children) {
-            const std::string_view n = c.local_name();
-            if (n == "title" || n == "desc" || n == "metadata" || n == "defs" || n == "style") {
-                if (n == "style" || n == "defs") doc_.report.note("<" + std::string(n) + "> content ignored");
-                continue;
-            }
-            Style cs = st;
-            Mat2x3 cm = m;
-            if (!transform(c, cm) || !style(c, cs)) return false;
-            if (n == "g" || n == "a" || n == "svg") {
-                if (n == "svg") doc_.report.note("nested <svg> treated as a group (its viewport is ignored)");
-                if (!children(c, cm, cs, depth + 1)) return false;
-            } else if (n == "rect" || n == "circle" || n == "ellipse" || n == "polygon" || n == "polyline" || n == "line") {
-                if (!shape(c, cm, cs)) return false;
-            } else {
-                return fail(c, "unsupported element (importable: g, rect, circle, ellipse, polygon, polyline, line)");
-            }
+    // Each child is released once read, so the nodes of a large flat document are freed while
+    // the stroke list grows.
+    bool children(Node parent, const Mat2x3& m, const Style& st, int depth) {
+        for (Node c = parent.first_child(), next; c; c = next) {
+            next = c.next_sibling();
+            if (!child(c, m, st, depth)) return false;
+            xml_->release(c);
         }
         return true;
+    }
+
+    bool child(Node c, const Mat2x3& m, const Style& st, int depth) {
+        if (c.type() != pugi::node_element) return true;  // character data
+        const std::string_view n = xml::local_name(c);
+        if (n == "title" || n == "desc" || n == "metadata" || n == "defs" || n == "style") {
+            if (n == "style" || n == "defs") doc_.report.note(std::string("<").append(n).append("> content ignored"));
+            return true;
+        }
+        Style cs = st;
+        Mat2x3 cm = m;
+        if (!transform(c, cm) || !style(c, cs)) return false;
+        if (n == "g" || n == "a" || n == "svg") {
+            if (n == "svg") doc_.report.note("nested <svg> treated as a group (its viewport is ignored)");
+            return children(c, cm, cs, depth + 1);
+        }
+        if (n == "rect" || n == "circle" || n == "ellipse" || n == "polygon" || n == "polyline" || n == "line")
+            return shape(c, cm, cs);
+        return fail(c, "unsupported element (importable: g, rect, circle, ellipse, polygon, polyline, line)");
     }
 };
 
@@ -428,9 +446,9 @@ bool sniff(const std::string& path, std::string_view head) {
     return head.find("<svg") != std::string_view::npos;
 }
 
-Result<Document> load(const std::string& path, std::string_view text, const ImportOptions& opts) {
+Result<Document> load(const std::string& path, std::string text, const ImportOptions& opts) {
     SvgReader r(path, opts);
-    return r.run(text);
+    return r.run(std::move(text));
 }
 
 }  // namespace

@@ -131,7 +131,7 @@ Result<Document> import_path(const std::string& path, const std::string& from, c
         if (!text) return text.error();
         const Importer* imp = forced ? forced : detect_importer(f, std::string_view(*text).substr(0, 4096));
         if (!imp) return make_error(Code::Unsupported, f + ": format not recognised (use --from spt-json, geometrize-json or svg)");
-        auto doc = imp->load(f, *text, opts);
+        auto doc = imp->load(f, std::move(*text), opts);
         if (!doc) return doc.error();
         if (files->size() == 1) return doc;
         // A sequence: every file must be a single frame on the same canvas and templates.

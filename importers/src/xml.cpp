@@ -1,216 +1,152 @@
-// Strict XML subset parser: well-formedness is checked (matching tags, quoted attributes,
-// no duplicate attributes), DTDs are skipped without being interpreted (no entity expansion
-// attacks), depth and element counts are bounded.
+// spt::xml on pugixml (see xml.hpp).
 #include "spt_import/xml.hpp"
 
-#include "text_cursor.hpp"
-
-#include <cctype>
-#include <cstring>
+#include <algorithm>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+#include <vector>
 
 namespace spt::xml {
 
-const Attribute* Element::attr(std::string_view n) const {
-    for (const auto& a : attributes)
-        if (a.name == n) return &a;
-    return nullptr;
-}
-
-std::string_view Element::local_name() const {
-    std::string_view n = name;
-    auto p = n.find(':');
-    return p == std::string_view::npos ? n : n.substr(p + 1);
-}
-
 namespace {
 
-bool is_name_start(unsigned char c) { return std::isalpha(c) || c == '_' || c == ':' || c >= 0x80; }
-bool is_name_char(unsigned char c) { return is_name_start(c) || std::isdigit(c) || c == '-' || c == '.'; }
+const char* status_text(pugi::xml_parse_status s) {
+    switch (s) {
+        case pugi::status_unrecognized_tag: return "unrecognised markup";
+        case pugi::status_bad_pi: return "unterminated or malformed processing instruction";
+        case pugi::status_bad_comment: return "unterminated or malformed comment";
+        case pugi::status_bad_cdata: return "unterminated CDATA section";
+        case pugi::status_bad_doctype: return "malformed DOCTYPE";
+        case pugi::status_bad_pcdata: return "malformed character data";
+        case pugi::status_bad_start_element: return "malformed start tag";
+        case pugi::status_bad_attribute: return "malformed attribute (values must be quoted)";
+        case pugi::status_bad_end_element: return "malformed end tag";
+        case pugi::status_no_document_element: return "no root element";
+        default: return nullptr;
+    }
+}
 
-class Parser : text::Cursor<ParseLimits> {
-public:
-    Parser(std::string_view t, const std::string& src, const ParseLimits& l) : Cursor(t, src, l) {}
+// An upper bound on the element count: every start tag is '<' and a name character. Lets the
+// element limit refuse a document before pugixml allocates a node for each element.
+size_t start_tags_at_most(std::string_view t) {
+    size_t n = 0;
+    for (size_t p = t.find('<'); p != std::string_view::npos; p = t.find('<', p + 1))
+        if (p + 1 < t.size() && t[p + 1] != '/' && t[p + 1] != '!' && t[p + 1] != '?') ++n;
+    return n;
+}
 
-    Result<Element> run() {
-        if (s_.size() > lim_.max_bytes) return make_error(Code::LimitExceeded, src_ + ": XML document larger than the limit");
-        if (s_.size() >= 3 && (unsigned char)s_[0] == 0xEF && (unsigned char)s_[1] == 0xBB && (unsigned char)s_[2] == 0xBF) pos_ = 3;
-        if (!misc()) return err_;
-        if (pos_ >= s_.size() || s_[pos_] != '<') { fail("expected the root element"); return err_; }
-        Element root;
-        if (!element(root, 0)) return err_;
-        if (!misc()) return err_;
-        if (pos_ != s_.size()) { fail("unexpected content after the root element"); return err_; }
-        return root;
-    }
-
-private:
-    void advance(size_t n) {
-        for (size_t i = 0; i < n && pos_ < s_.size(); ++i, ++pos_)
-            if (s_[pos_] == '\n') ++line_;
-    }
-    bool starts(std::string_view w) const { return s_.substr(pos_, w.size()) == w; }
-    void skip_ws() {
-        while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\r' || s_[pos_] == '\n')) advance(1);
-    }
-    // Skips to just after `end`; fails when it is missing.
-    bool skip_past(std::string_view end, const char* what) {
-        size_t p = s_.find(end, pos_);
-        if (p == std::string_view::npos) { advance(s_.size() - pos_); return fail(std::string("unterminated ") + what); }
-        advance(p + end.size() - pos_);
-        return true;
-    }
-    // Prolog and epilog: whitespace, comments, processing instructions, DOCTYPE.
-    bool misc() {
-        for (;;) {
-            skip_ws();
-            if (starts("<?")) { if (!skip_past("?>", "processing instruction")) return false; }
-            else if (starts("<!--")) { if (!skip_past("-->", "comment")) return false; }
-            else if (starts("<!DOCTYPE")) {
-                // Skip, honouring an internal subset in brackets; its entities are NOT defined.
-                int depth = 0;
-                while (pos_ < s_.size()) {
-                    char c = s_[pos_];
-                    advance(1);
-                    if (c == '[') ++depth;
-                    else if (c == ']') --depth;
-                    else if (c == '>' && depth <= 0) break;
-                }
-                if (pos_ >= s_.size()) return fail("unterminated DOCTYPE");
-            } else return true;
-        }
-    }
-    bool name(std::string& out) {
-        if (pos_ >= s_.size() || !is_name_start((unsigned char)s_[pos_])) return fail("expected a name");
-        size_t b = pos_;
-        while (pos_ < s_.size() && is_name_char((unsigned char)s_[pos_])) ++pos_;
-        out.assign(s_.substr(b, pos_ - b));
-        return true;
-    }
-    static void put_utf8(std::string& out, uint32_t cp) {
-        if (cp < 0x80) out += char(cp);
-        else if (cp < 0x800) { out += char(0xC0 | (cp >> 6)); out += char(0x80 | (cp & 63)); }
-        else if (cp < 0x10000) { out += char(0xE0 | (cp >> 12)); out += char(0x80 | ((cp >> 6) & 63)); out += char(0x80 | (cp & 63)); }
-        else { out += char(0xF0 | (cp >> 18)); out += char(0x80 | ((cp >> 12) & 63)); out += char(0x80 | ((cp >> 6) & 63)); out += char(0x80 | (cp & 63)); }
-    }
-    // Decodes character data up to (not including) a stop character.
-    bool chars(std::string& out, char stop) {
-        while (pos_ < s_.size() && s_[pos_] != stop) {
-            char c = s_[pos_];
-            if (stop != '<' && c == '<') return fail("'<' in attribute value");
-            if (c != '&') { out += c; advance(1); continue; }
-            size_t semi = s_.find(';', pos_);
-            if (semi == std::string_view::npos || semi - pos_ > 12) return fail("bad entity reference");
-            std::string_view ent = s_.substr(pos_ + 1, semi - pos_ - 1);
-            if (ent == "amp") out += '&';
-            else if (ent == "lt") out += '<';
-            else if (ent == "gt") out += '>';
-            else if (ent == "quot") out += '"';
-            else if (ent == "apos") out += '\'';
-            else if (ent.size() >= 2 && ent[0] == '#') {
-                uint32_t cp = 0;
-                bool hex = ent[1] == 'x';
-                std::string_view d = ent.substr(hex ? 2 : 1);
-                if (d.empty()) return fail("bad character reference");
-                for (char h : d) {
-                    int v;
-                    if (h >= '0' && h <= '9') v = h - '0';
-                    else if (hex && h >= 'a' && h <= 'f') v = h - 'a' + 10;
-                    else if (hex && h >= 'A' && h <= 'F') v = h - 'A' + 10;
-                    else return fail("bad character reference");
-                    cp = cp * (hex ? 16 : 10) + uint32_t(v);
-                    if (cp > 0x10FFFF) return fail("character reference out of range");
-                }
-                if (cp == 0 || (cp >= 0xD800 && cp <= 0xDFFF)) return fail("invalid character reference");
-                put_utf8(out, cp);
-            } else return fail("unknown entity '&" + std::string(ent) + ";' (only the XML predefined entities are supported)");
-            advance(semi + 1 - pos_);
-        }
-        return true;
-    }
-    bool element(Element& e, uint32_t depth) {
-        if (depth > lim_.max_depth) return fail("elements nested deeper than " + std::to_string(lim_.max_depth));
-        if (++count_ > lim_.max_elements) return fail("too many XML elements", Code::LimitExceeded);
-        e.line = line_;
-        advance(1);  // '<'
-        if (!name(e.name)) return false;
-        for (;;) {
-            size_t before = pos_;
-            skip_ws();
-            if (pos_ >= s_.size()) return fail("unterminated start tag <" + e.name + ">");
-            if (s_[pos_] == '/') {
-                if (!starts("/>")) return fail("expected '/>'");
-                advance(2);
-                return true;
-            }
-            if (s_[pos_] == '>') { advance(1); break; }
-            if (pos_ == before) return fail("expected whitespace between attributes of <" + e.name + ">");
-            Attribute a;
-            a.line = line_;
-            if (!name(a.name)) return false;
-            skip_ws();
-            if (pos_ >= s_.size() || s_[pos_] != '=') return fail("expected '=' after attribute " + a.name);
-            advance(1);
-            skip_ws();
-            if (pos_ >= s_.size() || (s_[pos_] != '"' && s_[pos_] != '\'')) return fail("attribute " + a.name + " value must be quoted");
-            char q = s_[pos_];
-            advance(1);
-            if (!chars(a.value, q)) return false;
-            if (pos_ >= s_.size()) return fail("unterminated value of attribute " + a.name);
-            advance(1);
-            if (e.attr(a.name)) return fail("duplicate attribute " + a.name + " on <" + e.name + ">");
-            e.attributes.push_back(std::move(a));
-        }
-        // Content.
-        for (;;) {
-            if (pos_ >= s_.size()) return fail("element <" + e.name + "> (line " + std::to_string(e.line) + ") is not closed");
-            if (s_[pos_] != '<') { if (!chars(e.text, '<')) return false; continue; }
-            if (starts("</")) {
-                advance(2);
-                std::string n;
-                if (!name(n)) return false;
-                if (n != e.name) return fail("</" + n + "> closes <" + e.name + "> opened on line " + std::to_string(e.line));
-                skip_ws();
-                if (pos_ >= s_.size() || s_[pos_] != '>') return fail("expected '>' in end tag");
-                advance(1);
-                return true;
-            }
-            if (starts("<!--")) { if (!skip_past("-->", "comment")) return false; continue; }
-            if (starts("<?")) { if (!skip_past("?>", "processing instruction")) return false; continue; }
-            if (starts("<![CDATA[")) {
-                advance(9);
-                size_t p = s_.find("]]>", pos_);
-                if (p == std::string_view::npos) return fail("unterminated CDATA section");
-                e.text.append(s_.substr(pos_, p - pos_));
-                advance(p + 3 - pos_);
-                continue;
-            }
-            if (starts("<!")) return fail("unexpected markup declaration inside <" + e.name + ">");
-            e.children.emplace_back();
-            if (!element(e.children.back(), depth + 1)) return false;
-        }
-    }
-};
+// ' near "<ellips"': the markup where parsing stopped, printable and short.
+std::string near(std::string_view t, size_t offset) {
+    if (offset >= t.size()) return {};
+    const size_t lt = t.rfind('<', offset);
+    const size_t b = lt != std::string_view::npos && offset - lt < 24 ? lt : offset;
+    std::string s;
+    for (size_t i = b; i < t.size() && i < b + 24 && t[i] != '\n'; ++i)
+        s += t[i] == 0 ? ' ' : t[i] >= 32 && t[i] < 127 ? t[i] : '?';  // 0: a terminator pugixml wrote
+    return " near \"" + s + "\"";
+}
 
 }  // namespace
 
-Result<Element> parse(std::string_view text, const std::string& source, const ParseLimits& lim) {
-    Parser p(text, source, lim);
-    return p.run();
+uint32_t Document::line_at(size_t offset) const {
+    return uint32_t(1 + (std::lower_bound(newlines_.begin(), newlines_.end(), uint32_t(std::min(offset, text_.size()))) - newlines_.begin()));
 }
 
-std::string escape(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&apos;"; break;
-            default: out += c;
+uint32_t Document::line(pugi::xml_node n) const {
+    const ptrdiff_t off = n.offset_debug();  // the name, just after '<'
+    return off < 0 ? 0 : line_at(size_t(off));
+}
+
+void Document::release(pugi::xml_node n) {
+    n.parent().remove_child(n);
+#if defined(__GLIBC__)
+    // pugixml frees its 32 KiB pages as they empty; glibc keeps freed heap pages mapped unless
+    // asked, and the stroke list being built is one large block that cannot reuse them.
+    if (++released_ % 65536 == 0) malloc_trim(0);
+#endif
+}
+
+Result<std::unique_ptr<Document>> Document::parse(std::string text_in, const std::string& source,
+                                                  const ParseLimits& lim) {
+    if (text_in.size() > lim.max_bytes) return make_error(Code::LimitExceeded, source + ": XML document larger than the limit");
+    if (text_in.size() > 0xFFFFFFFFu) return make_error(Code::LimitExceeded, source + ": XML document larger than 4 GiB");
+    if (start_tags_at_most(text_in) > lim.max_elements)
+        return make_error(Code::LimitExceeded, source + ": too many XML elements (more than " + std::to_string(lim.max_elements) + ")");
+    std::unique_ptr<Document> d(new Document());
+    d->text_ = std::move(text_in);
+    const std::string_view text = d->text_;
+    for (size_t p = text.find('\n'); p != std::string_view::npos; p = text.find('\n', p + 1)) d->newlines_.push_back(uint32_t(p));
+    d->newlines_.shrink_to_fit();
+    auto fail = [&](size_t offset, const std::string& what, Code code = Code::Corrupt) -> Error {
+        return make_error(code, source + ":" + std::to_string(d->line_at(offset)) + ": " + what, offset);
+    };
+    // pugixml's defaults: CDATA kept as text, the predefined entities and character references
+    // expanded (only those), line ends normalised; comments and PIs skipped; the DOCTYPE kept
+    // as one node, to refuse entity declarations.
+    const pugi::xml_parse_result r =
+        d->doc_.load_buffer_inplace(d->text_.data(), d->text_.size(), pugi::parse_default | pugi::parse_doctype, pugi::encoding_auto);
+
+    // The limits, over what was parsed (the partial tree too: a deep document is refused for
+    // its depth even if it is also unterminated). Iterative: no recursion on hostile depth.
+    size_t elements = 0;
+    int depth = 0;
+    for (pugi::xml_node n = d->doc_.first_child(); n;) {
+        if (n.type() == pugi::node_element) {
+            if (++elements > lim.max_elements)
+                return fail(size_t(n.offset_debug()), "too many XML elements", Code::LimitExceeded);
+            if (depth > int(lim.max_depth))
+                return fail(size_t(n.offset_debug()), "elements nested deeper than " + std::to_string(lim.max_depth));
+            for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute())
+                for (pugi::xml_attribute b = n.first_attribute(); b != a; b = b.next_attribute())
+                    if (std::string_view(a.name()) == b.name())
+                        return fail(size_t(n.offset_debug()), std::string("duplicate attribute ") + a.name() + " on <" + n.name() + ">");
         }
+        if (n.first_child()) {
+            n = n.first_child();
+            ++depth;
+            continue;
+        }
+        while (n && !n.next_sibling()) {
+            n = n.parent();
+            --depth;
+        }
+        if (n) n = n.next_sibling();
     }
-    return out;
+
+    if (!r) {
+        if (const char* what = status_text(r.status)) return fail(size_t(r.offset), what + near(text, size_t(r.offset)));
+        if (r.status == pugi::status_end_element_mismatch) {
+            // pugixml stops on the last byte when the text ends inside an element, else on the
+            // name of the end tag that does not match.
+            if (size_t(r.offset) + 1 >= text.size()) return fail(size_t(r.offset), "unexpected end of document: an element is not closed");
+            size_t e = size_t(r.offset);
+            while (e < text.size() && text[e] != '>' && text[e] != ' ' && text[e] != '\n' && text[e] != 0 && e - size_t(r.offset) < 64) ++e;
+            return fail(size_t(r.offset), "end tag </" + std::string(text.substr(size_t(r.offset), e - size_t(r.offset))) +
+                                              "> does not close the element open here");
+        }
+        return fail(size_t(r.offset), r.description());
+    }
+    // Exactly one root element and nothing but markup around it; no entity declarations.
+    bool root_seen = false;
+    for (pugi::xml_node n = d->doc_.first_child(); n; n = n.next_sibling()) {
+        if (n.type() == pugi::node_doctype && std::string_view(n.value()).find("<!ENTITY") != std::string_view::npos)
+            return fail(size_t(std::max<ptrdiff_t>(0, n.offset_debug())),
+                        "the DOCTYPE declares entities; none is expanded, so the document is refused");
+        const bool element = n.type() == pugi::node_element;
+        if ((element && root_seen) || n.type() == pugi::node_pcdata || n.type() == pugi::node_cdata)
+            return fail(n.offset_debug() < 0 ? 0 : size_t(n.offset_debug()), "unexpected content after the root element");
+        root_seen = root_seen || element;
+    }
+    if (!root_seen) return fail(0, "expected the root element");
+    d->elements_ = elements;
+    return d;
+}
+
+std::string_view local_name(pugi::xml_node n) {
+    std::string_view s = n.name();
+    const size_t p = s.find(':');
+    return p == std::string_view::npos ? s : s.substr(p + 1);
 }
 
 }  // namespace spt::xml

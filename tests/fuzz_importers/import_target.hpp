@@ -4,7 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <string_view>
+#include <string>
 #include <utility>
 
 #include "spt_import/importer.hpp"
@@ -18,7 +18,7 @@ inline int import_bytes(const spt::import::Importer& imp, const uint8_t* data, s
     opts.limits.max_pixels = 1u << 20;
     opts.limits.max_strokes_per_frame = 1u << 16;
     opts.canvas_size = std::make_pair(64u, 48u);
-    auto r = imp.load("fuzz-input", std::string_view(reinterpret_cast<const char*>(data), size), opts);
+    auto r = imp.load("fuzz-input", std::string(reinterpret_cast<const char*>(data), size), opts);
     (void)r;
     return 0;
 }

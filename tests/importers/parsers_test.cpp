@@ -1,4 +1,5 @@
-// The hand-rolled JSON and XML parsers: values, line numbers in errors, limits.
+// The JSON layer (json/, on nlohmann-json) and the SVG importers' XML (pugixml): values, line
+// numbers in errors, limits.
 #include <gtest/gtest.h>
 
 #include "spt_json/json.hpp"
@@ -47,39 +48,79 @@ TEST(Json, DepthLimitStopsDeepNesting) {
 }
 
 TEST(Xml, ParsesElementsAttributesEntities) {
-    auto e = xml::parse("<?xml version=\"1.0\"?>\n<!DOCTYPE svg>\n<svg a='1 &amp; 2'>\n <!-- c -->\n <g><rect x=\"&#65;\"/></g>\n</svg>\n", "t.svg");
-    ASSERT_TRUE(e.ok()) << e.error().message;
-    EXPECT_EQ(e->name, "svg");
-    EXPECT_EQ(e->attr("a")->value, "1 & 2");
-    ASSERT_EQ(e->children.size(), 1u);
-    EXPECT_EQ(e->children[0].line, 5u);
-    EXPECT_EQ(e->children[0].children[0].attr("x")->value, "A");
+    const std::string text = "<?xml version=\"1.0\"?>\n<!DOCTYPE svg>\n<svg a='1 &amp; 2'>\n <!-- c -->\n <g><rect x=\"&#65;\"/></g>\n</svg>\n";
+    auto d = xml::Document::parse(text, "t.svg");
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    const pugi::xml_node e = (*d)->root();
+    EXPECT_STREQ(e.name(), "svg");
+    EXPECT_STREQ(e.attribute("a").value(), "1 & 2");
+    const pugi::xml_node g = e.child("g");
+    ASSERT_TRUE(g);
+    EXPECT_EQ((*d)->line(g), 5u);
+    EXPECT_EQ((*d)->line(e), 3u);
+    EXPECT_STREQ(g.child("rect").attribute("x").value(), "A");
+    EXPECT_EQ(xml::local_name(e), "svg");
 }
 
 TEST(Xml, ErrorsNameFileAndLine) {
     struct Case { const char* text; const char* expect; };
     const Case cases[] = {
-        {"<svg>\n<g>\n</svg>", "t.svg:3:"},
+        {"<svg>\n<g>\n</svg>", "t.svg:3: end tag </svg>"},
         {"<svg a=1/>", "quoted"},
         {"<svg a='1' a='2'/>", "duplicate attribute"},
-        {"<svg>&foo;</svg>", "unknown entity"},
-        {"<svg>", "not closed"},
+        {"<svg>\n<g>\n</g>", "not closed"},
         {"<svg/><x/>", "after the root"},
         {"<!-- x", "unterminated"},
+        {"<svg><![CDATA[ x</svg>", "CDATA"},
+        {"", "root element"},
     };
     for (const auto& c : cases) {
-        auto e = xml::parse(c.text, "t.svg");
+        auto e = xml::Document::parse(c.text, "t.svg");
         ASSERT_FALSE(e.ok()) << c.text;
         EXPECT_NE(e.error().message.find(c.expect), std::string::npos) << e.error().message;
+        EXPECT_EQ(e.error().message.rfind("t.svg", 0), 0u) << e.error().message;
     }
+}
+
+TEST(Xml, NoEntityIsDefinedByTheDocument) {
+    // Entity declarations (billion laughs, external entities) are refused, never expanded;
+    // a reference to an undeclared entity stays as written.
+    for (const char* dtd : {"<!DOCTYPE svg [<!ENTITY a \"aaaaaaaaaa\"><!ENTITY b \"&a;&a;&a;&a;&a;&a;\">]>",
+                            "<!DOCTYPE svg [\n<!ENTITY x SYSTEM \"file:///etc/passwd\">\n]>"}) {
+        auto d = xml::Document::parse(std::string(dtd) + "\n<svg t=\"&b;&x;\">&b;</svg>", "t.svg");
+        ASSERT_FALSE(d.ok()) << dtd;
+        EXPECT_NE(d.error().message.find("declares entities"), std::string::npos) << d.error().message;
+    }
+    auto d = xml::Document::parse("<!DOCTYPE svg PUBLIC \"-//W3C//DTD SVG 1.1//EN\" \"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd\">\n"
+                                  "<svg t=\"&foo;&amp;\">&b;</svg>", "t.svg");
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    EXPECT_STREQ((*d)->root().attribute("t").value(), "&foo;&");
 }
 
 TEST(Xml, DepthLimit) {
     std::string deep;
     for (int i = 0; i < 1000; ++i) deep += "<g>";
-    auto e = xml::parse(deep, "deep.svg");
+    auto e = xml::Document::parse(deep, "deep.svg");  // unterminated too: the depth is named
     ASSERT_FALSE(e.ok());
-    EXPECT_NE(e.error().message.find("deeper"), std::string::npos);
+    EXPECT_NE(e.error().message.find("deeper"), std::string::npos) << e.error().message;
+    for (int i = 0; i < 1000; ++i) deep += "</g>";
+    auto f = xml::Document::parse(deep, "deep.svg");
+    ASSERT_FALSE(f.ok());
+    EXPECT_NE(f.error().message.find("deeper"), std::string::npos) << f.error().message;
+}
+
+TEST(Xml, ElementAndSizeLimitsBeforeParsing) {
+    xml::ParseLimits lim;
+    lim.max_elements = 3;
+    auto many = xml::Document::parse("<svg><g/><g/><g/></svg>", "t.svg", lim);
+    ASSERT_FALSE(many.ok());
+    EXPECT_EQ(many.error().code, Code::LimitExceeded);
+    EXPECT_TRUE(xml::Document::parse("<svg><g/><g/></svg>", "t.svg", lim).ok());
+    lim = {};
+    lim.max_bytes = 8;
+    auto big = xml::Document::parse("<svg></svg>", "t.svg", lim);
+    ASSERT_FALSE(big.ok());
+    EXPECT_EQ(big.error().code, Code::LimitExceeded);
 }
 
 TEST(Json, ErrorsGiveLineAndColumnAndTheByteOffset) {
@@ -128,4 +169,18 @@ TEST(Json, OneEscaperForEveryWriter) {
     EXPECT_EQ(back->text, "x\xc3\xa9\x1f\xef\xbf\xbd");
     // Invalid UTF-8 inside a document is refused.
     EXPECT_FALSE(json::parse("\"a\xff\"", "t.json").ok());
+}
+
+TEST(Xml, LinesSurviveTheInPlaceParse) {
+    // pugixml rewrites the buffer (terminators after names, newlines in attribute values turned
+    // to spaces); lines come from an index of the text as it was.
+    auto d = xml::Document::parse("<svg\n  a=\"1\n2\n3\">\n<g\n/>\n\n<rect/></svg>", "t.svg");
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    EXPECT_STREQ((*d)->root().attribute("a").value(), "1 2 3");
+    EXPECT_EQ((*d)->line((*d)->root().child("g")), 5u);
+    EXPECT_EQ((*d)->line((*d)->root().child("rect")), 8u);
+    EXPECT_EQ((*d)->elements(), 3u);
+    (*d)->release((*d)->root().child("g"));
+    EXPECT_FALSE((*d)->root().child("g"));
+    EXPECT_EQ((*d)->line((*d)->root().child("rect")), 8u);
 }

@@ -27,8 +27,9 @@ struct Importer {
     const char* description;  // one line for --help
     // True when the file looks like this importer's format (extension and first bytes).
     bool (*sniff)(const std::string& path, std::string_view head);
-    // Loads one file. `text` is its whole content; `path` names it in errors.
-    Result<Document> (*load)(const std::string& path, std::string_view text, const ImportOptions& opts);
+    // Loads one file. `text` is its whole content, handed over so that a parser may work in
+    // place (the SVG importer does: no second copy of a large file); `path` names it in errors.
+    Result<Document> (*load)(const std::string& path, std::string text, const ImportOptions& opts);
 };
 
 const std::vector<const Importer*>& importers();
