@@ -1,40 +1,16 @@
-// base64 and a stored-deflate PNG encoder.
+// base64, and PNG encoding through libpng.
+//
+// base64 stays hand-written (40 lines): libpng and zlib have none, and the importers do not
+// depend on OpenImageIO, the converter's image library, whose Strutil has one.
 #include "spt_import/codec.hpp"
 
-#include <algorithm>
-#include <array>
+#include <png.h>
 
 namespace spt::import {
 
 namespace {
 constexpr char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
-uint32_t crc32(const uint8_t* p, size_t n, uint32_t crc = 0) {
-    static const std::array<uint32_t, 256> table = [] {
-        std::array<uint32_t, 256> t{};
-        for (uint32_t i = 0; i < 256; ++i) {
-            uint32_t c = i;
-            for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-            t[i] = c;
-        }
-        return t;
-    }();
-    crc = ~crc;
-    for (size_t i = 0; i < n; ++i) crc = table[(crc ^ p[i]) & 0xFF] ^ (crc >> 8);
-    return ~crc;
-}
-
-void put_be32(std::vector<uint8_t>& o, uint32_t v) {
-    o.push_back(uint8_t(v >> 24)); o.push_back(uint8_t(v >> 16)); o.push_back(uint8_t(v >> 8)); o.push_back(uint8_t(v));
-}
-
-void chunk(std::vector<uint8_t>& png, const char type[4], const std::vector<uint8_t>& data) {
-    put_be32(png, uint32_t(data.size()));
-    const size_t start = png.size();
-    png.insert(png.end(), type, type + 4);
-    png.insert(png.end(), data.begin(), data.end());
-    put_be32(png, crc32(png.data() + start, png.size() - start));
-}
 }  // namespace
 
 std::string base64_encode(const uint8_t* d, size_t n) {
@@ -78,41 +54,17 @@ std::optional<std::vector<uint8_t>> base64_decode(std::string_view s) {
 }
 
 std::vector<uint8_t> encode_png(uint32_t w, uint32_t h, int channels, const uint8_t* px) {
-    // Raw scanlines, each prefixed by filter type 0.
-    const size_t row = size_t(w) * channels;
-    std::vector<uint8_t> raw;
-    raw.reserve((row + 1) * h);
-    for (uint32_t y = 0; y < h; ++y) {
-        raw.push_back(0);
-        raw.insert(raw.end(), px + y * row, px + (y + 1) * row);
-    }
-    // zlib stream: header, stored deflate blocks (<= 65535 bytes each), Adler-32.
-    std::vector<uint8_t> z = {0x78, 0x01};
-    size_t pos = 0;
-    do {
-        const size_t n = std::min<size_t>(65535, raw.size() - pos);
-        const bool last = pos + n == raw.size();
-        z.push_back(last ? 1 : 0);
-        z.push_back(uint8_t(n)); z.push_back(uint8_t(n >> 8));
-        z.push_back(uint8_t(~n)); z.push_back(uint8_t(~n >> 8));
-        z.insert(z.end(), raw.begin() + long(pos), raw.begin() + long(pos + n));
-        pos += n;
-    } while (pos < raw.size());
-    uint32_t a = 1, b = 0;
-    for (uint8_t c : raw) { a = (a + c) % 65521; b = (b + a) % 65521; }
-    put_be32(z, (b << 16) | a);
-
-    std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
-    std::vector<uint8_t> ihdr;
-    put_be32(ihdr, w);
-    put_be32(ihdr, h);
-    ihdr.push_back(8);
-    ihdr.push_back(channels == 4 ? 6 : channels == 3 ? 2 : 0);
-    ihdr.push_back(0); ihdr.push_back(0); ihdr.push_back(0);
-    chunk(png, "IHDR", ihdr);
-    chunk(png, "IDAT", z);
-    chunk(png, "IEND", {});
-    return png;
+    png_image img{};
+    img.version = PNG_IMAGE_VERSION;
+    img.width = w;
+    img.height = h;
+    img.format = channels == 4 ? PNG_FORMAT_RGBA : channels == 3 ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;
+    png_alloc_size_t size = 0;
+    if (!png_image_write_to_memory(&img, nullptr, &size, 0, px, 0, nullptr)) return {};  // size only
+    std::vector<uint8_t> out(size);
+    if (!png_image_write_to_memory(&img, out.data(), &size, 0, px, 0, nullptr)) return {};
+    out.resize(size);
+    return out;
 }
 
 }  // namespace spt::import

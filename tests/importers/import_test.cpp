@@ -1,6 +1,7 @@
 // Importers and exporters: exact shapes, sequences, round trips through the JSON stroke list,
 // and clean failures on bad input.
 #include <gtest/gtest.h>
+#include <png.h>
 
 #include <filesystem>
 #include <fstream>
@@ -393,17 +394,29 @@ TEST(Export, SvgHoldsEveryStrokeAndReimports) {
     for (size_t i = 0; i < 3; ++i) EXPECT_TRUE(back->frames[0].added[i] == list[i]) << i;
 }
 
-TEST(Codec, PngIsWellFormedAndBase64RoundTrips) {
-    std::vector<uint8_t> px(70000);
-    for (size_t i = 0; i < px.size(); ++i) px[i] = uint8_t(i * 7);
-    auto png = import::encode_png(350, 200, 1, px.data());
-    ASSERT_GT(png.size(), px.size());
-    EXPECT_EQ(png[1], 'P');
-    auto b64 = import::base64_encode(png.data(), png.size());
-    auto dec = import::base64_decode(b64);
-    ASSERT_TRUE(dec.has_value());
-    EXPECT_EQ(*dec, png);
+TEST(Codec, PngDecodesToThePixelsAndBase64RoundTrips) {
+    for (int channels : {1, 3, 4}) {
+        std::vector<uint8_t> px(size_t(350) * 200 * channels);
+        for (size_t i = 0; i < px.size(); ++i) px[i] = uint8_t(i * 7 + i / 350);
+        auto png = import::encode_png(350, 200, channels, px.data());
+        ASSERT_GT(png.size(), 8u);
+        EXPECT_EQ(png[1], 'P');
+        png_image img{};
+        img.version = PNG_IMAGE_VERSION;
+        ASSERT_TRUE(png_image_begin_read_from_memory(&img, png.data(), png.size())) << img.message;
+        EXPECT_EQ(img.width, 350u);
+        EXPECT_EQ(img.height, 200u);
+        img.format = channels == 4 ? PNG_FORMAT_RGBA : channels == 3 ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;
+        std::vector<uint8_t> back(PNG_IMAGE_SIZE(img));
+        ASSERT_TRUE(png_image_finish_read(&img, nullptr, back.data(), 0, nullptr)) << img.message;
+        EXPECT_EQ(back, px) << channels << " channels";
+        auto b64 = import::base64_encode(png.data(), png.size());
+        auto dec = import::base64_decode(b64);
+        ASSERT_TRUE(dec.has_value());
+        EXPECT_EQ(*dec, png);
+    }
     EXPECT_FALSE(import::base64_decode("ab$c").has_value());
+    EXPECT_EQ(import::base64_encode(reinterpret_cast<const uint8_t*>("any carnal pleas"), 16), "YW55IGNhcm5hbCBwbGVhcw==");
 }
 
 TEST(ImportCli, NothingWrittenOnBadInput) {
