@@ -131,3 +131,27 @@ TEST_F(IoSequenceDisk, ErrorsNameThePattern) {
     ASSERT_FALSE(nodir.ok());
     EXPECT_NE(nodir.error().message.find("/no/such/dir/f.####.png"), std::string::npos);
 }
+
+// The cases where OpenImageIO's sequence functions differ from what spt promises (see the
+// comments in sequence.cpp): they must keep working.
+TEST(IoSequence, NamesOpenImageIOWouldMisread) {
+    EXPECT_EQ(format_frame("100%_####.png", 3), "100%_0003.png");  // printf would eat the '%'
+    EXPECT_EQ(format_frame("out.####.png", 3), "out.0003.png");      // not 16 digits
+    EXPECT_EQ(format_frame("out.1-10x2@@.png", 3), "out.03.png");
+    EXPECT_FALSE(is_sequence_pattern("out.%4d.png"));                // space padding: not a name
+    auto r = parse_frame_range("0-999999999");                      // kept as a span, not expanded
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r->frames_within(999999990, 2000000000).size(), 10u);
+}
+
+TEST_F(IoSequenceDisk, ListsNamesWithRegexCharacters) {
+    for (const char* n : {"take+1.0001.png", "take+1.0002.png", "takee1.0003.png", "(a)$.01.png"})
+        std::ofstream(dir / n) << "x";
+    auto s = list_sequence((dir / "take+1.####.png").string());
+    ASSERT_TRUE(s.ok()) << s.error().message;
+    ASSERT_EQ(s->size(), 2u);
+    EXPECT_EQ(fs::path((*s)[1].path).filename(), "take+1.0002.png");
+    auto t = list_sequence((dir / "(a)$.@@.png").string());
+    ASSERT_TRUE(t.ok()) << t.error().message;
+    EXPECT_EQ(t->size(), 1u);
+}

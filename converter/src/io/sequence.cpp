@@ -1,9 +1,12 @@
 // Frame ranges, sequence patterns (#, @, %0Nd, oiiotool "1-120#") and sequence listing.
 #include "io/sequence.hpp"
 
+#include <OpenImageIO/filesystem.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -50,45 +53,47 @@ size_t name_start(const std::string& s) {
     return slash == std::string::npos ? 0 : slash + 1;
 }
 
+// OpenImageIO's parse_pattern finds the placeholder (#, @, %0Nd, %d) and an oiiotool range in
+// front of it, in the file-name part only (a '#' in a folder name is not one). The width is
+// ours: "####" is 4 digits as Blender, Nuke and ffmpeg write them, where OIIO counts 4 per '#'.
 std::optional<Placeholder> find_placeholder(const std::string& s) {
-    for (size_t i = name_start(s); i < s.size(); ++i) {
-        const char c = s[i];
-        if (c == '%') {
-            size_t j = i + 1;
-            int width = 0;
-            if (j < s.size() && s[j] == '0') {
-                ++j;
-                size_t k = j;
-                while (j < s.size() && std::isdigit(uint8_t(s[j])) && j - k < 2) width = width * 10 + (s[j++] - '0');
-                if (j == k) continue;
-            }
-            if (j < s.size() && s[j] == 'd') return Placeholder{i, j + 1, width, std::nullopt};
-            continue;
+    const size_t ns = name_start(s);
+    const std::string name = s.substr(ns);
+    std::string normalized, framespec;
+    if (!OIIO::Filesystem::parse_pattern(name.c_str(), 0, normalized, framespec)) return std::nullopt;
+    // normalized = prefix + "%0Nd" (or "%d") + suffix, with prefix and suffix as in `name`.
+    // The placeholder starts where the two first differ, or, when the name already is printf
+    // style, at its first "%[0-9]*d".
+    size_t pct = 0;
+    while (pct < name.size() && pct < normalized.size() && name[pct] == normalized[pct]) ++pct;
+    if (pct == normalized.size()) {
+        for (pct = normalized.find('%'); pct != std::string::npos; pct = normalized.find('%', pct + 1)) {
+            size_t k = pct + 1;
+            while (k < normalized.size() && std::isdigit(uint8_t(normalized[k]))) ++k;
+            if (k < normalized.size() && normalized[k] == 'd') break;
         }
-        if (c != '#' && c != '@') continue;
-        size_t j = i;
-        while (j < s.size() && s[j] == c) ++j;
-        const size_t n = j - i;
-        Placeholder p{i, j, c == '#' ? (n == 1 ? 4 : int(n)) : int(n), std::nullopt};
-        // An oiiotool range just before it: the longest parsable tail of [0-9,x-] characters
-        // that starts at a number boundary ("shot_2024-1-120#" -> "1-120").
-        size_t run = i;
-        const size_t lo = name_start(s);
-        while (run > lo && (std::isdigit(uint8_t(s[run - 1])) || s[run - 1] == '-' ||
-                            s[run - 1] == ',' || s[run - 1] == 'x'))
-            --run;
-        for (size_t b = run; b < i; ++b) {
-            if (!std::isdigit(uint8_t(s[b])) || (b > run && std::isdigit(uint8_t(s[b - 1])))) continue;
-            auto r = parse_frame_range(s.substr(b, i - b));
-            if (r.ok() && !r->empty()) {
-                p.begin = b;
-                p.range = std::move(*r);
-                break;
-            }
-        }
-        return p;
     }
-    return std::nullopt;
+    if (pct >= normalized.size() || normalized[pct] != '%') return std::nullopt;  // %V views: no frame
+    size_t d = pct + 1;
+    while (d < normalized.size() && std::isdigit(uint8_t(normalized[d]))) ++d;
+    if (d >= normalized.size() || normalized[d] != 'd') return std::nullopt;
+    const size_t suffix = normalized.size() - d - 1;
+    if (name.size() < pct + suffix || name.compare(0, pct, normalized, 0, pct) != 0) return std::nullopt;
+    Placeholder p{ns + pct, ns + name.size() - suffix, 0, std::nullopt};
+    std::string_view text = std::string_view(name).substr(pct, name.size() - suffix - pct);
+    if (!framespec.empty() && text.compare(0, framespec.size(), framespec) == 0) {
+        if (auto r = parse_frame_range(framespec); r.ok() && !r->empty()) p.range = std::move(*r);
+        else p.begin += framespec.size();  // a range we do not take (OIIO's "y" steps): part of the name
+        text.remove_prefix(framespec.size());
+    }
+    if (text.empty()) return std::nullopt;
+    const char c = text.back();
+    if (c == '#') p.width = text.size() == 1 ? 4 : int(text.size());
+    else if (c == '@') p.width = int(text.size());
+    else if (text == "%d") p.width = 0;
+    else if (text.size() >= 4 && text[1] == '0' && text.size() <= 5) p.width = std::atoi(std::string(text.substr(2, text.size() - 3)).c_str());
+    else return std::nullopt;  // "%4d" (space padded): not a file-name convention
+    return p;
 }
 
 std::string pad_number(long frame, int width) {
@@ -142,6 +147,8 @@ std::vector<long> FrameRange::frames_within(long lo, long hi, size_t max_count) 
     return out;
 }
 
+// Ours, not OIIO's enumerate_sequence: that one expands every frame into a vector ("0-999999999"
+// is 4 GB) and takes the reversed and negative spans --frames refuses.
 Result<FrameRange> parse_frame_range(const std::string& text) {
     FrameRange r;
     const std::string t = trim(text);
@@ -177,6 +184,8 @@ Result<FrameRange> parse_frame_range(const std::string& text) {
 
 bool is_sequence_pattern(const std::string& name) { return find_placeholder(name).has_value(); }
 
+// Substitution, not OIIO's enumerate_file_sequence: that one passes the whole name to printf,
+// so any other '%' in it ("100%_####.png") would be read as a conversion.
 std::string format_frame(const std::string& pattern, long frame) {
     auto p = find_placeholder(pattern);
     if (!p) return pattern;
@@ -227,7 +236,10 @@ Result<std::vector<SequenceFile>> list_sequence(const std::string& pattern_or_di
         return out;
     }
 
-    // Find the frames on disk: prefix + digits + suffix within the pattern's folder.
+    // Find the frames on disk: prefix + digits + suffix within the pattern's folder. Ours, not
+    // OIIO's scan_for_matching_filenames: its regex leaves '+', '^', '$' and '|' unescaped
+    // ("take+1.####.png" finds nothing), it needs a width ("%d" fails) and it keeps mis-padded
+    // names ("f.00003.png" for ####).
     const size_t ns = name_start(pat);
     const std::string dir = ns == 0 ? std::string(".") : pat.substr(0, ns);
     const std::string prefix = pat.substr(ns, p->begin - ns), suffix = pat.substr(p->end);
