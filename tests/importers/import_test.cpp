@@ -175,7 +175,7 @@ TEST(ImportGeometrize, ShapesTypesAndBackground) {
 }
 
 // The fitted strokes paint exactly geometrize's pixels for circles and rectangles (its
-// rasteriser, re-derived in geometrize_raster.cpp and checked against its PNGs by the media test).
+// rasteriser, re-derived in geometrize_scan.cpp and checked against its PNGs by the media test).
 TEST(ImportGeometrize, StrokesPaintGeometrizesPixels) {
     const char* js =
         "{\"shapes\":[{\"type\":1, \"data\":[0,0,39,29],\"color\":[0,0,0,255]},\n"
@@ -199,7 +199,7 @@ TEST(ImportGeometrize, StrokesPaintGeometrizesPixels) {
 }
 
 // Rotated ellipses are geometrize's 20-gons of truncated vertices: polygon strokes on its own
-// vertices paint its pixels (its span rule re-derived in geometrize_raster.cpp).
+// vertices paint its pixels (its span rule re-derived in geometrize_scan.cpp).
 TEST(ImportGeometrize, RotatedEllipsesAreAlmostExactPolygons) {
     const char* js =
         "{\"shapes\":[{\"type\":1, \"data\":[0,0,59,49],\"color\":[0,0,0,255]},\n"
