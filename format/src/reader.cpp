@@ -1,114 +1,16 @@
 // Reader (SPEC.md 9.2): opens through IEND -> indx when they are sound, otherwise scans the
 // chunks and keeps every complete, CRC-valid frame. Limits are checked before allocation.
+// The live list of a frame and render_frame (a player's calls) are in frame_player.cpp.
 #include <algorithm>
 
-#include "byte_source.hpp"
-#include "container.hpp"
-#include "frame_coding.hpp"
-#include "render_impl.hpp"
-#include "spt/reader.hpp"
-#include "spt/render.hpp"
+#include "reader_impl.hpp"
 #include "validate.hpp"
 
 namespace spt {
 
 Reader::~Reader() = default;
 
-namespace {
-
-using detail::ByteSource;
-
-// Lends a reader's kept payload buffer to a Chunk for one decode and takes it back (with
-// whatever capacity it grew to) when the decode ends.
-struct SparePayload {
-    SparePayload(std::vector<uint8_t>& chunk, std::vector<uint8_t>& spare) : chunk_(chunk), spare_(spare) { chunk_.swap(spare_); }
-    ~SparePayload() { spare_.swap(chunk_); }
-    SparePayload(const SparePayload&) = delete;
-    SparePayload& operator=(const SparePayload&) = delete;
-
-private:
-    std::vector<uint8_t>& chunk_;
-    std::vector<uint8_t>& spare_;
-};
-
-struct Chunk {
-    uint64_t offset = 0;  // of the length field
-    uint32_t length = 0;
-    uint8_t type[4] = {};
-    std::vector<uint8_t> payload;
-    uint64_t payload_offset() const { return offset + 8; }
-    uint64_t end() const { return offset + detail::kChunkOverhead + length; }
-};
-
-std::string at(uint64_t off) { return " at byte offset " + std::to_string(off); }
-
-class ReaderImpl final : public Reader {
-public:
-    ReaderImpl(std::unique_ptr<ByteSource> src, const ReaderOptions& opts) : src_(std::move(src)), opts_(opts) {}
-
-    Status open();
-
-    const StreamInfo& info() const override { return info_; }
-    const std::vector<FrameEntry>& frames() const override { return frames_; }
-    bool has_index() const override { return has_index_; }
-    bool complete() const override { return complete_; }
-    const std::vector<Error>& warnings() const override { return warnings_; }
-    uint64_t file_size() const override { return src_->size(); }
-
-    Result<Frame> read_frame(size_t pos) override {
-        Frame f;
-        SPT_TRY(decode(pos, nullptr, f));
-        return f;
-    }
-    Status read_frame(size_t pos, Frame& out) override { return decode(pos, nullptr, out); }
-    Result<const std::vector<Stroke>*> strokes_at(size_t pos) override;
-    Status render_frame(size_t pos, Canvas& canvas, unsigned threads) override;
-    Result<FieldStats> field_stats(size_t pos) override {
-        FieldStats fs;
-        Frame f;
-        SPT_TRY(decode(pos, &fs, f));
-        return fs;
-    }
-
-private:
-    // Reads a chunk's header; with `whole`, also its payload and (if enabled) checks its CRC.
-    Status read_chunk(uint64_t off, Chunk& c, bool whole);
-    Status read_header_chunks();
-    Status try_index();
-    Status scan_frames();
-    Status add_frame(const Chunk& c, const uint8_t* first8, uint64_t body_size, const detail::BodyPeek& peek);
-    void read_ancillary(const Chunk& c);
-    std::string frame_where(uint32_t index, uint64_t off) const {
-        return "frame " + std::to_string(index) + " (FRAM chunk" + at(off) + ")";
-    }
-    // The reader's Renderer (coding 2 frames and render_frame), made on first use.
-    Status ensure_renderer(const std::string& where, uint64_t off);
-    // render_frame's fast path: true when frame `pos` is a sound key frame of stamp records in
-    // coding 0 and has been rendered from them; false (nothing reported) otherwise.
-    bool render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads);
-    // Decodes frame `pos` into f, reusing f's memory (and the reader's chunk buffer).
-    Status decode(size_t pos, FieldStats* stats, Frame& f);
-    void warn(Error e) { warnings_.push_back(std::move(e)); }
-
-    std::unique_ptr<ByteSource> src_;
-    ReaderOptions opts_;
-    StreamInfo info_;
-    detail::StreamShape shape_;
-    std::vector<FrameEntry> frames_;
-    std::vector<Error> warnings_;
-    bool has_index_ = false, complete_ = false;
-    bool complete_damaged_ = false;  // a chunk was skipped: never report the file complete
-    uint64_t first_frame_offset_ = 0;  // where the chunks after the header chunks start
-    // strokes_at cache
-    std::vector<Stroke> live_;
-    size_t live_pos_ = SIZE_MAX;
-    std::unique_ptr<Renderer> renderer_;  // coding 2 frames render while they decode
-    // A frame chunk's payload buffer kept between decodes, so that reading frame after frame
-    // does not allocate (and fault in) a fresh buffer each time. decode() borrows it (a nested
-    // decode, via strokes_at for coding 2, finds it empty and allocates its own).
-    std::vector<uint8_t> spare_payload_;
-    Frame scratch_frame_;  // strokes_at's decoded frame, reused the same way
-};
+namespace reader {
 
 Status ReaderImpl::read_chunk(uint64_t off, Chunk& c, bool whole) {
     uint8_t h[8];
@@ -422,77 +324,12 @@ Status ReaderImpl::decode(size_t pos, FieldStats* stats, Frame& f) {
     return {};
 }
 
-Status ReaderImpl::ensure_renderer(const std::string& where, uint64_t off) {
-    if (renderer_) return {};
-    auto r = Renderer::create(info_.header, info_.templates);
-    if (!r) return make_error(r.error().code, where + ": " + r.error().message, off);
-    renderer_ = std::move(*r);
-    return {};
-}
-
-bool ReaderImpl::render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads) {
-    const FrameEntry& e = frames_[pos];
-    if (e.type != FrameType::Key || e.coding != Coding::Stored) return false;
-    Chunk c;
-    const SparePayload spare(c.payload, spare_payload_);
-    // The checks of decode() and decode_stored_body(); anything unusual takes the general path.
-    detail::FrameHeader fh;
-    if (!read_chunk(e.offset, c, true) || !detail::is_type(c.type, "FRAM") || c.length < 8 ||
-        !detail::decode_frame_header(c.payload.data(), 8, c.payload_offset(), fh) || fh.index != e.index ||
-        fh.type != uint8_t(FrameType::Key) || fh.coding != uint8_t(Coding::Stored) || c.length < 12)
-        return false;
-    const uint8_t* body = c.payload.data() + 8;
-    const uint32_t added = detail::load_u32(body);
-    if (added > opts_.limits.max_strokes_per_frame || added > opts_.limits.max_live_strokes ||
-        uint64_t(c.length) - 12 != uint64_t(added) * 16)
-        return false;
-    if (!ensure_renderer("", 0)) return false;
-    // The renderer checks every record (kind, ranges) and bounds the fill work of SPEC 10.
-    return static_cast<const RendererImpl&>(*renderer_).render_stamp_records(canvas, body + 4, added, threads,
-                                                                           opts_.limits.max_fill_work);
-}
-
-Status ReaderImpl::render_frame(size_t pos, Canvas& canvas, unsigned threads) {
-    if (pos >= frames_.size())
-        return make_error(Code::InvalidArgument, "frame " + std::to_string(pos) + " does not exist (" +
-                                                     std::to_string(frames_.size()) + " frames)");
-    if (render_stamp_frame(pos, canvas, threads)) return {};
-    auto live = strokes_at(pos);
-    if (!live) return live.error();
-    const FrameEntry& e = frames_[pos];
-    SPT_TRY(ensure_renderer(frame_where(e.index, e.offset), e.offset));
-    return renderer_->render(canvas, **live, threads);
-}
-
-Result<const std::vector<Stroke>*> ReaderImpl::strokes_at(size_t pos) {
-    if (pos >= frames_.size())
-        return make_error(Code::InvalidArgument, "frame " + std::to_string(pos) + " does not exist (" +
-                                                     std::to_string(frames_.size()) + " frames)");
-    if (live_pos_ == pos) return &live_;
-    size_t start = pos;
-    while (frames_[start].type != FrameType::Key) --start;  // frame 0 is always a key frame
-    if (live_pos_ != SIZE_MAX && live_pos_ >= start && live_pos_ < pos) start = live_pos_ + 1;
-    else live_pos_ = SIZE_MAX;
-    for (size_t i = start; i <= pos; ++i) {
-        // Not re-entered: frame i's base (for coding 2) is the live list of frame i - 1.
-        if (auto st = decode(i, nullptr, scratch_frame_); !st) { live_pos_ = SIZE_MAX; live_.clear(); return st.error(); }
-        if (auto st = apply_frame(live_, scratch_frame_, info_.header, opts_.limits, &info_.templates); !st) {
-            live_pos_ = SIZE_MAX;
-            live_.clear();
-            const auto& e = frames_[i];
-            return make_error(st.error().code, frame_where(e.index, e.offset) + ": " + st.error().message, e.offset);
-        }
-        live_pos_ = i;
-    }
-    return &live_;
-}
-
-}  // namespace
+}  // namespace reader
 
 Result<std::unique_ptr<Reader>> Reader::open(const std::string& path, const ReaderOptions& opts) {
     auto src = detail::FileSource::open(path);
     if (!src) return make_error(Code::IoError, path + ": cannot open for reading");
-    auto r = std::make_unique<ReaderImpl>(std::move(src), opts);
+    auto r = std::make_unique<reader::ReaderImpl>(std::move(src), opts);
     if (auto st = r->open(); !st) {
         Error e = st.error();
         e.message = path + ": " + e.message;
@@ -502,7 +339,7 @@ Result<std::unique_ptr<Reader>> Reader::open(const std::string& path, const Read
 }
 
 Result<std::unique_ptr<Reader>> Reader::open_memory(const uint8_t* data, size_t size, const ReaderOptions& opts) {
-    auto r = std::make_unique<ReaderImpl>(std::make_unique<detail::MemorySource>(data, size), opts);
+    auto r = std::make_unique<reader::ReaderImpl>(std::make_unique<detail::MemorySource>(data, size), opts);
     if (auto st = r->open(); !st) return st.error();
     return std::unique_ptr<Reader>(std::move(r));
 }

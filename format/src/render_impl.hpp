@@ -13,6 +13,10 @@
 
 namespace spt {
 
+namespace detail {
+struct StampSource;
+}
+
 class RendererImpl final : public Renderer {
 public:
     RendererImpl(const Header& h, const std::vector<Template>& t);
@@ -35,13 +39,9 @@ public:
     static constexpr size_t kFootprintCacheBytes = size_t(256) << 20;
     static constexpr size_t kMaxFootprintBytes = size_t(16) << 20;
 
-    // Renders a key frame given as n coding-0 stamp records (SPEC 6: 16 bytes each) straight
-    // into the tiles, without a Stroke list: the same bytes as render() of the decoded strokes.
-    // Returns false, having drawn nothing, when a record is not a valid stamp with a cached
-    // footprint or the strokes' fill work may exceed work_limit (SPEC 10); the caller then
-    // takes the general path, which reports what is wrong.
-    bool render_stamp_records(Canvas& canvas, const uint8_t* records, size_t n, unsigned threads,
-                              uint64_t work_limit) const;
+    // detail::render_stamp_frame (stamp_frame.hpp): a key frame of stamps binned straight from
+    // their source, without a Stroke list.
+    bool render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads, uint64_t work_limit) const;
     // Range and reference checks of one stroke (SPEC 8.7).
     Status check(const Stroke& s) const;
     // check(s) of a stamp, without the message: true when it passes.

@@ -16,9 +16,9 @@
 #include <immintrin.h>
 #endif
 
-#include "byte_io.hpp"
 #include "raster_cull.hpp"
 #include "render_impl.hpp"
+#include "stamp_frame.hpp"
 
 namespace spt {
 
@@ -387,26 +387,31 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
     return error;
 }
 
-bool RendererImpl::render_stamp_records(Canvas& canvas, const uint8_t* records, size_t n, unsigned threads,
-                                        uint64_t work_limit) const {
+bool RendererImpl::render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads,
+                                 uint64_t work_limit) const {
     Bins& bins = scratch_bins();
-    Binner binner(*this, bins, n);
+    Binner binner(*this, bins, src.count);
     const uint32_t S = uint32_t(header_.sets.size()), T = uint32_t(templates_.size());
     const uint32_t O = uint32_t(header_.orientations.size());
     uint64_t work = 0;  // at most 2^24 strokes of less than 2^36 each: no overflow
-    for (size_t i = 0; i < n; ++i) {
-        // SPEC 6: kind 0, set, template, orientation, x, y (little-endian), R, G, B, A.
-        const uint8_t* q = records + 16 * i;
-        const uint32_t set = q[1], tmpl = q[2], orient = q[3];
-        const uint32_t x = detail::load_u32(q + 4), y = detail::load_u32(q + 8);
-        // The checks of stamp_valid() in one branch (|x|, |y| <= 2^24 by unsigned wrap-around).
-        constexpr uint32_t kMax = uint32_t(kMaxCoord);
-        if ((q[0] != 0) | (set >= S) | (tmpl >= T) | (orient >= O) | (x + kMax > 2 * kMax) | (y + kMax > 2 * kMax))
-            return false;
-        const StampKind* k = binner.kind(set, tmpl, orient);
-        if (!k) return false;
-        work += k->work;
-        binner.add_stamp(*k, int32_t(x), int32_t(y), Rgba8{q[12], q[13], q[14], q[15]});
+    // Batches small enough to stay in L1 between the decoder's writes and the binning's reads.
+    constexpr size_t kBatch = 256;
+    StampStroke batch[kBatch];
+    for (size_t first = 0; first < src.count; first += kBatch) {
+        const size_t n = std::min(kBatch, src.count - first);
+        if (!src.fill(src.ctx, first, n, batch)) return false;
+        for (size_t i = 0; i < n; ++i) {
+            const StampStroke& t = batch[i];
+            const uint32_t x = uint32_t(t.x), y = uint32_t(t.y);
+            // The checks of stamp_valid() in one branch (|x|, |y| <= 2^24 by unsigned wrap-around).
+            constexpr uint32_t kMax = uint32_t(kMaxCoord);
+            if ((t.set >= S) | (t.tmpl >= T) | (t.orient >= O) | (x + kMax > 2 * kMax) | (y + kMax > 2 * kMax))
+                return false;
+            const StampKind* k = binner.kind(t.set, t.tmpl, t.orient);
+            if (!k) return false;
+            work += k->work;
+            binner.add_stamp(*k, t.x, t.y, t.color);
+        }
     }
     if (work > work_limit) return false;
     binner.finish();
@@ -414,5 +419,15 @@ bool RendererImpl::render_stamp_records(Canvas& canvas, const uint8_t* records, 
     draw_tiles(*this, canvas, bins, nullptr, threads);
     return true;
 }
+
+namespace detail {
+
+bool render_stamp_frame(const Renderer& renderer, Canvas& canvas, const StampSource& src, unsigned threads,
+                        uint64_t work_limit) {
+    // Renderer::create makes only RendererImpl.
+    return static_cast<const RendererImpl&>(renderer).render_stamps(canvas, src, threads, work_limit);
+}
+
+}  // namespace detail
 
 }  // namespace spt

@@ -1,6 +1,7 @@
 // Coding 0 frame bodies (SPEC.md 6): fixed-size little-endian records.
 #include "byte_io.hpp"
 #include "frame_coding.hpp"
+#include "stamp_frame.hpp"
 #include "validate.hpp"
 
 namespace spt::detail {
@@ -117,7 +118,35 @@ Status get_stroke(ByteCursor& c, Stroke& st, const DecodeContext& ctx, uint32_t 
 // can be checked against the bytes left before anything is allocated.
 constexpr size_t kMinStrokeBytes = 16;
 
+// StampSource::fill over 16-byte records: a stamp is kind 0, set, template, orientation, x, y
+// (little-endian), R, G, B, A.
+bool fill_stamps(const void* ctx, size_t first, size_t n, StampStroke* out) {
+    const uint8_t* q = static_cast<const uint8_t*>(ctx) + 16 * first;
+    for (size_t i = 0; i < n; ++i, q += 16) {
+        if (q[0] != 0) return false;
+        StampStroke& t = out[i];
+        t.set = q[1];
+        t.tmpl = q[2];
+        t.orient = q[3];
+        t.x = int32_t(load_u32(q + 4));
+        t.y = int32_t(load_u32(q + 8));
+        t.color = Rgba8{q[12], q[13], q[14], q[15]};
+    }
+    return true;
+}
+
 }  // namespace
+
+bool stored_key_stamps(const uint8_t* body, size_t n, const Limits& limits, StampSource& out) {
+    if (n < 4) return false;
+    const uint32_t added = load_u32(body);
+    if (added > limits.max_strokes_per_frame || added > limits.max_live_strokes || uint64_t(n) - 4 != uint64_t(added) * 16)
+        return false;
+    out.count = added;
+    out.ctx = body + 4;
+    out.fill = fill_stamps;
+    return true;
+}
 
 void encode_stored_body(const Frame& f, std::vector<uint8_t>& out, BodySplit* split, FieldStats* stats) {
     ByteSink s;

@@ -1,7 +1,7 @@
 // Reader::render_frame, a player's decode + render in one call: it must give exactly
 // Renderer::render of strokes_at's live list, and report exactly strokes_at's errors, whether
-// it takes its fast path (a coding-0 key frame of stamps, rendered straight from its records by
-// RendererImpl::render_stamp_records) or the general one.
+// it takes its fast path (a coding-0 key frame of stamps, handed from its records to the
+// renderer's tiles by stamp_frame.hpp's interface) or the general one.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,7 +10,7 @@
 
 #include "format/coding_random_streams.hpp"
 #include "format/golden_canonical.hpp"
-#include "../format/src/render_impl.hpp"
+#include "../format/src/stamp_frame.hpp"
 
 using namespace spt;
 using namespace spt::testing;
@@ -67,6 +67,18 @@ void put_record(std::vector<uint8_t>& out, const StampStroke& s) {
     for (int32_t v : {s.x, s.y})
         for (int k = 0; k < 4; ++k) out.push_back(uint8_t(uint32_t(v) >> (8 * k)));
     out.insert(out.end(), {s.color.r, s.color.g, s.color.b, s.color.a});
+}
+
+// The fast path as the reader takes it: a coding-0 key frame body of n records (a count, then
+// the records) through the stored-frame decoder's stamp source to the renderer.
+bool render_records(const Renderer& r, Canvas& c, const std::vector<uint8_t>& records, size_t n, unsigned threads,
+                    uint64_t work_limit) {
+    std::vector<uint8_t> body;
+    for (int k = 0; k < 4; ++k) body.push_back(uint8_t(uint32_t(n) >> (8 * k)));
+    body.insert(body.end(), records.begin(), records.end());
+    detail::StampSource src;
+    if (!detail::stored_key_stamps(body.data(), body.size(), Limits{}, src)) return false;
+    return detail::render_stamp_frame(r, c, src, threads, work_limit);
 }
 
 }  // namespace
@@ -127,7 +139,7 @@ TEST(RenderFrame, StampRecordsRenderAsTheirStrokesOrAreDeclined) {
         const Header& h = rs.info.header;
         auto made = Renderer::create(h, rs.info.templates);
         ASSERT_TRUE(made.ok());
-        const auto& impl = static_cast<const RendererImpl&>(**made);
+        const Renderer& impl = **made;
         std::vector<uint8_t> records;
         for (const Stroke& s : rs.frames[0].added) {
             ASSERT_EQ(s.kind, StrokeKind::Stamp);
@@ -136,9 +148,9 @@ TEST(RenderFrame, StampRecordsRenderAsTheirStrokesOrAreDeclined) {
         const size_t n = rs.frames[0].added.size();
         Canvas want, got;
         ASSERT_TRUE(impl.render(want, rs.frames[0].added).ok());
-        ASSERT_TRUE(impl.render_stamp_records(got, records.data(), n, 1, ~uint64_t(0)));
+        ASSERT_TRUE(render_records(impl, got, records, n, 1, ~uint64_t(0)));
         EXPECT_EQ(got.rgb, want.rgb);
-        ASSERT_TRUE(impl.render_stamp_records(got, records.data(), n, 2, ~uint64_t(0)));
+        ASSERT_TRUE(render_records(impl, got, records, n, 2, ~uint64_t(0)));
         EXPECT_EQ(got.rgb, want.rgb);
         if (n == 0) continue;
 
@@ -147,9 +159,10 @@ TEST(RenderFrame, StampRecordsRenderAsTheirStrokesOrAreDeclined) {
             std::vector<uint8_t> bad = records;
             bad[at] = value;
             Canvas c;
-            return !impl.render_stamp_records(c, bad.data(), n, 1, limit) && c.rgb.empty();
+            return !render_records(impl, c, bad, n, 1, limit) && c.rgb.empty();
         };
         EXPECT_TRUE(declined(k, 1));                                  // kind 1: an affine stroke
+        EXPECT_TRUE(declined(16 * (n - 1), 1));                       // the last record (a later batch)
         EXPECT_TRUE(declined(k + 1, uint8_t(h.sets.size())));         // set out of range
         EXPECT_TRUE(declined(k + 2, uint8_t(rs.info.templates.size())));  // template out of range
         EXPECT_TRUE(declined(k + 3, uint8_t(h.orientations.size())));  // orientation out of range
@@ -172,7 +185,7 @@ TEST(RenderFrame, StampRecordsRenderAsTheirStrokesOrAreDeclined) {
     std::vector<uint8_t> rec;
     put_record(rec, big);
     Canvas c;
-    EXPECT_FALSE(static_cast<const RendererImpl&>(**made).render_stamp_records(c, rec.data(), 1, 1, ~uint64_t(0)));
+    EXPECT_FALSE(render_records(**made, c, rec, 1, 1, ~uint64_t(0)));
 }
 
 // Damaged files and tight limits: render_frame says exactly what strokes_at says.

@@ -1,0 +1,37 @@
+// Internal: the player's path for key frames of stamps (Reader::render_frame). The frame's
+// decoder hands the renderer its stamps a batch at a time and the renderer bins them straight
+// into its tiles: no Stroke list is built, the renderer reads no file bytes, and the reader
+// knows nothing of the renderer's insides.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "spt/limits.hpp"
+#include "spt/render.hpp"
+#include "spt/types.hpp"
+
+namespace spt::detail {
+
+// The stamps of one frame, in drawing order: fill(ctx, first, n, out) writes stamps first ..
+// first + n - 1 to out[0 .. n), or returns false when one of them is not a stamp.
+struct StampSource {
+    size_t count = 0;
+    const void* ctx = nullptr;
+    bool (*fill)(const void* ctx, size_t first, size_t n, StampStroke* out) = nullptr;
+};
+
+// Renders a key frame of src.count stamps onto `canvas`: the same bytes as Renderer::render of
+// those stamps as Strokes (render_tiles.cpp). Returns false, having drawn nothing, when a stamp
+// is not valid (SPEC 8.7), has no cached footprint, or the frame's fill work may exceed
+// `work_limit` (SPEC 10); the caller then takes the general path, which reports what is wrong.
+bool render_stamp_frame(const Renderer& renderer, Canvas& canvas, const StampSource& src, unsigned threads,
+                        uint64_t work_limit);
+
+// The stamps of a coding-0 key frame body (SPEC 6; stored_frame.cpp): true, with `out` set,
+// when the body is a stroke count within `limits` followed by that many 16-byte records (fill
+// then declines any record that is not a stamp); false for any other body, which the general
+// path decodes. `body` must outlive `out`.
+bool stored_key_stamps(const uint8_t* body, size_t n, const Limits& limits, StampSource& out);
+
+}  // namespace spt::detail
