@@ -5,9 +5,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
-#include "spt/writer.hpp"
+#include "spt/coding.hpp"
 
 // The model functions below are forced inline so that a decoder's state stays in registers
 // across a whole stroke instead of going through memory on every bit (a store-to-load
@@ -223,5 +225,12 @@ SPT_CODER_INLINE int code_res8(C& c, Res8Model& m, int v) {
 
 // Wraps an 8-bit difference into -128..127.
 inline int wrap8(int d) { return ((d + 128) & 255) - 128; }
+
+// A coded value that the decoder found invalid: its message (the caller adds where).
+struct SyntaxError {
+    bool bad = false;
+    std::string msg;
+    void set(std::string m) { if (!bad) { bad = true; msg = std::move(m); } }
+};
 
 }  // namespace spt::detail

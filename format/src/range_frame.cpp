@@ -4,7 +4,8 @@
 
 #include "byte_io.hpp"
 #include "frame_coding.hpp"
-#include "range_strokes.hpp"
+#include "edit_stream.hpp"
+#include "stroke_stream.hpp"
 
 namespace spt::detail {
 namespace {

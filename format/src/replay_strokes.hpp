@@ -1,5 +1,5 @@
 // Internal: the coding-2 stroke stream (SPEC.md 7.7.3-7.7.5), written once for both directions
-// like range_strokes.hpp. The caller keeps the canvas; every stroke is drawn on it as soon as it
+// like stroke_stream.hpp. The caller keeps the canvas; every stroke is drawn on it as soon as it
 // is coded, so encoder and decoder predict from the same pixels.
 #pragma once
 
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "canvas_ctx.hpp"
+#include "canvas_prediction.hpp"
 #include "range_coder.hpp"
-#include "range_strokes.hpp"
+#include "stroke_stream.hpp"
 #include "spt/render.hpp"
 #include "spt/replay.hpp"
 

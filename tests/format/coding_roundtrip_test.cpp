@@ -10,7 +10,7 @@
 
 #include "format/coding_random_streams.hpp"
 #include "frame_coding.hpp"     // format/src: the stroke stream decoder on its own
-#include "range_strokes.hpp"    // format/src: the polygon syntax, to code hand-made plans
+#include "stroke_stream.hpp"    // format/src: the polygon syntax, to code hand-made plans
 
 using namespace spt;
 using namespace spt::testing;

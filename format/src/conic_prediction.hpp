@@ -53,17 +53,4 @@ inline void conic_unit_offsets(int64_t c, int64_t s, size_t n, std::vector<int64
     }
 }
 
-// How the encoder codes a polygon's outline (chosen by plan_polygon).
-struct PolygonPlan {
-    uint32_t shift = 4;          // lattice: vertex offsets are multiples of 2^shift (Q4)
-    int mode = 0;                // 0 differences, 1 differences from the previous one, 2 conic
-    int64_t cs[2] = {0, 0};      // conic: rotation (C, S), Q30
-    uint32_t matrix_shift = 4;   // conic: M's entries are multiples of 2^matrix_shift
-    int64_t m[4] = {0, 0, 0, 0}; // conic: M = (a b; c d), Q4
-};
-
-// The encoder's rotation for a regular n-gon: (round(2^30 cos 2pi/n), round(2^30 sin 2pi/n)).
-// Floating point is fine here: (C, S) are coded, so the decoder never recomputes them.
-void conic_rotation_for(size_t n, int64_t cs[2]);
-
 }  // namespace spt::detail

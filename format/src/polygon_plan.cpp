@@ -4,7 +4,8 @@
 // Nothing here constrains a decoder: any plan the syntax can express decodes.
 #include <cmath>
 
-#include "range_strokes.hpp"
+#include "polygon_plan.hpp"
+#include "stroke_stream.hpp"
 
 namespace spt::detail {
 namespace {

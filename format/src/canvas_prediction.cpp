@@ -1,6 +1,6 @@
 // Canvas predictions of coding 2 (SPEC.md 7.7.4). Integer arithmetic only: encoder and decoder
 // must compute the same contexts on every platform.
-#include "canvas_ctx.hpp"
+#include "canvas_prediction.hpp"
 
 #include <algorithm>
 #include <cstdlib>
