@@ -32,7 +32,7 @@ Status measure_frame_body(FrameType type, Coding coding, uint64_t body_size, con
                           const DecodeContext& ctx, BodySplit& split) {
     if (coding == Coding::Stored) return measure_stored_body(type, body_size, peek, ctx, split);
     // Coding 2 starts with coding 1's counts and edit stream (SPEC.md 7.7.3).
-    return measure_range_body(type, body_size, peek, ctx, split);
+    return measure_body_prefix(type, body_size, peek, ctx, split);
 }
 
 }  // namespace spt::detail

@@ -10,7 +10,7 @@
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
 #include "spt/types.hpp"
-#include "spt/writer.hpp"
+#include "spt/coding.hpp"
 #include "validate.hpp"
 
 namespace spt::detail {
@@ -20,6 +20,15 @@ struct BodySplit {
     uint64_t stroke_bytes = 0;
     uint64_t motion_bytes = 0;
     uint32_t added = 0, removed = 0;
+    // A body of `body_bytes` bytes whose first `motion_bytes` code the removals and motion.
+    static BodySplit of(uint64_t body_bytes, uint64_t motion_bytes, uint32_t added, uint32_t removed) {
+        BodySplit s;
+        s.stroke_bytes = body_bytes - motion_bytes;
+        s.motion_bytes = motion_bytes;
+        s.added = added;
+        s.removed = removed;
+        return s;
+    }
 };
 
 struct DecodeContext {
@@ -34,6 +43,9 @@ struct DecodeContext {
     const Renderer* renderer = nullptr;
     const std::vector<Stroke>* base = nullptr;  // inter frames: the live list before the frame
 };
+
+// An error in a frame body: `msg` with where the body is, `rel` bytes into it.
+Error body_error(const DecodeContext& ctx, Code code, const std::string& msg, uint64_t rel = 0);
 
 // Encodes a validated frame's body. `stats` (optional) receives per-field accounting.
 void encode_frame_body(const Frame& f, Coding coding, const StreamShape& shape,
@@ -63,28 +75,30 @@ void encode_range_body(const Frame& f, const StreamShape& shape, std::vector<uin
                        FieldStats* stats);
 Status decode_range_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
                          BodySplit* split);
-Status measure_range_body(FrameType type, uint64_t body_size, const BodyPeek& peek, const DecodeContext& ctx,
-                          BodySplit& split);
 // The two range-coded streams of a coding-1 body on their own (fuzz targets, tests).
 Status decode_stroke_stream(const uint8_t* p, size_t n, uint32_t count, const DecodeContext& ctx,
                             std::vector<Stroke>& out);
 Status decode_edit_stream(const uint8_t* p, size_t n, uint32_t removed_count, bool motion, uint16_t block_size,
                           const DecodeContext& ctx, Frame& out);
 
+// The counts and the edit stream that open every coding-1 and coding-2 body (SPEC.md 7.1;
+// body_prefix.cpp).
 class ByteCursor;
-// The counts and the edit stream that open every coding-1 and coding-2 body (SPEC.md 7.1):
-// reads them from `c`, decodes the removals and motion into `out`, and leaves `c` at the stroke
-// stream. `motion_bytes` is the length of that prefix.
+class ByteSink;
 struct BodyPrefix {
     uint32_t removed = 0, added = 0;
-    size_t motion_bytes = 0;
+    size_t motion_bytes = 0;  // the prefix's length for inter frames, 0 for key frames
 };
+// Reads the counts and the edit stream from `c`, decodes the removals and motion into `out`,
+// and leaves `c` at the stroke stream.
 Status decode_body_prefix(FrameType type, ByteCursor& c, const DecodeContext& ctx, Frame& out, BodyPrefix& pre);
-// The encoder's side: writes f's counts and edit stream (SPEC.md 7.1) into `head`. The edit
-// stream's bits go to `stats` per field, the rest as Field::Count. Returns the prefix length
-// that counts as motion bytes (0 for key frames).
-class ByteSink;
+// The encoder's side: writes f's counts and edit stream into `head`. The edit stream's bits go
+// to `stats` per field, the rest as Field::Count. Returns the prefix length that counts as
+// motion bytes (0 for key frames).
 size_t encode_body_prefix(const Frame& f, ByteSink& head, FieldStats* stats);
+// The frame table's view: the split of a coding-1 or coding-2 body from its counts alone.
+Status measure_body_prefix(FrameType type, uint64_t body_size, const BodyPeek& peek, const DecodeContext& ctx,
+                           BodySplit& split);
 
 // Coding 2 (SPEC.md 7.7). What the encoder needs besides the frame.
 struct ReplayEnv {

@@ -14,11 +14,6 @@ constexpr uint8_t kRandomOrientation = 1;     // flags bit 0
 constexpr uint8_t kMaxColorStep = 32;
 constexpr uint64_t kMaxEncoderScan = 1u << 24;  // candidates searched for one stroke
 
-Error body_error(const DecodeContext& ctx, Code code, const std::string& msg, uint64_t rel = 0) {
-    return make_error(code, ctx.where + ": " + msg + " (body at byte offset " + std::to_string(ctx.offset + rel) + ")",
-                      ctx.offset + rel);
-}
-
 // Matches the frame's strokes to the generator's candidates, set by set: each stroke takes the
 // first candidate after the previous one with its position, template (and orientation when
 // drawn). An earlier identical candidate gives the same stroke, so first match is exact.
@@ -138,12 +133,7 @@ bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_
     out.insert(out.end(), head.bytes().begin(), head.bytes().end());
     out.insert(out.end(), stream.begin(), stream.end());
     if (stats) stats->add(fs);
-    if (split) {
-        split->motion_bytes = motion_bytes;
-        split->stroke_bytes = out.size() - start - motion_bytes;
-        split->added = uint32_t(f.added.size());
-        split->removed = uint32_t(f.removed.size());
-    }
+    if (split) *split = BodySplit::of(out.size() - start, motion_bytes, uint32_t(f.added.size()), uint32_t(f.removed.size()));
     return true;
 }
 
@@ -154,8 +144,7 @@ Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const Deco
     ByteCursor c(p, n, ctx.offset, ctx.where);
     BodyPrefix pre;
     SPT_TRY(decode_body_prefix(type, c, ctx, out, pre));
-    const uint32_t removed = pre.removed, added = pre.added;
-    const size_t motion_bytes = pre.motion_bytes;
+    const uint32_t added = pre.added;
     if (added == 0) return c.error(Code::Corrupt, "a coding-2 frame without strokes (such frames use coding 1)");
     if (added > ctx.limits.max_strokes_per_frame)
         return c.error(Code::LimitExceeded, std::to_string(added) + " strokes exceed the per-frame limit");
@@ -187,12 +176,7 @@ Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const Deco
     out.replay.color_step = step;
     out.replay.regions.clear();
     for (auto& s : sets) out.replay.regions.push_back(std::move(s.region));
-    if (split) {
-        split->motion_bytes = type == FrameType::Inter ? motion_bytes : 0;
-        split->stroke_bytes = n - split->motion_bytes;
-        split->added = added;
-        split->removed = removed;
-    }
+    if (split) *split = BodySplit::of(n, pre.motion_bytes, added, pre.removed);
     return {};
 }
 

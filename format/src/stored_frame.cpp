@@ -166,12 +166,7 @@ void encode_stored_body(const Frame& f, std::vector<uint8_t>& out, BodySplit* sp
     s.u32(uint32_t(f.added.size()));
     if (stats) (*stats)[Field::Count] += 32.0;
     for (const auto& st : f.added) put_stroke(s, st, stats);
-    if (split) {
-        split->motion_bytes = motion_bytes;
-        split->stroke_bytes = s.size() - motion_bytes;
-        split->added = uint32_t(f.added.size());
-        split->removed = uint32_t(f.removed.size());
-    }
+    if (split) *split = BodySplit::of(s.size(), motion_bytes, uint32_t(f.added.size()), uint32_t(f.removed.size()));
     out.insert(out.end(), s.bytes().begin(), s.bytes().end());
 }
 
@@ -248,12 +243,7 @@ Status decode_stored_body(FrameType type, const uint8_t* p, size_t n, const Deco
         std::vector<uint8_t> scratch;
         encode_stored_body(out, scratch, &dummy, ctx.stats);  // exact byte accounting
     }
-    if (split) {
-        split->motion_bytes = motion_bytes;
-        split->stroke_bytes = n - motion_bytes;
-        split->added = added;
-        split->removed = uint32_t(out.removed.size());
-    }
+    if (split) *split = BodySplit::of(n, motion_bytes, added, uint32_t(out.removed.size()));
     return {};
 }
 
@@ -279,10 +269,7 @@ Status measure_stored_body(FrameType type, uint64_t body_size, const BodyPeek& p
         }
     }
     if (pos + 4 > body_size || !peek(pos, 4, b)) return fail("added_count");
-    split.added = load_u32(b);
-    split.removed = removed;
-    split.motion_bytes = pos;
-    split.stroke_bytes = body_size - pos;
+    split = BodySplit::of(body_size, pos, load_u32(b), removed);
     return {};
 }
 

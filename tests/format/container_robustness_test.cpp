@@ -124,6 +124,33 @@ std::vector<uint8_t> patched(size_t field_offset_in_head, uint32_t value) {
 }
 }  // namespace
 
+// A reserved motion_present value (SPEC.md 7.1) is Unsupported wherever the body's counts are
+// read: the frame table (index or scan) reads them with the decoder's own reader, so a file
+// with one does not open.
+TEST(ContainerRobustness, ReservedMotionFlagIsUnsupported) {
+    for (Coding coding : {Coding::Range, Coding::Replay}) {
+        auto b = sample_file(Coding::Range);
+        auto r = Reader::open_memory(b.data(), b.size());
+        ASSERT_TRUE(r.ok());
+        size_t body = 0;
+        for (const FrameEntry& e : (*r)->frames())
+            if (e.type == FrameType::Inter) { body = size_t(e.offset) + 16; break; }
+        ASSERT_NE(body, 0u) << "the sample has an inter frame";
+        if (coding == Coding::Replay) b[body - 8 + 5] = 2;  // the FRAM coding byte: coding 2 reads the same counts
+        size_t at = body;
+        for (int k = 0; k < 2; ++k)
+            while (b[at++] & 0x80) {}  // removed_count, added_count
+        ASSERT_LE(b[at], 1);
+        b[at] = 2;  // motion_present
+        ReaderOptions ro;
+        ro.verify_checksums = false;
+        auto d = Reader::open_memory(b.data(), b.size(), ro);
+        ASSERT_FALSE(d.ok()) << int(coding);
+        EXPECT_EQ(d.error().code, Code::Unsupported) << d.error().message;
+        EXPECT_NE(d.error().message.find("motion_present 2 is reserved"), std::string::npos) << d.error().message;
+    }
+}
+
 TEST(ContainerLimits, AbsurdCanvasIsRejectedBeforeAllocation) {
     auto b = patched(8, 0x7FFFFFFF);  // width
     auto r = Reader::open_memory(b.data(), b.size());
