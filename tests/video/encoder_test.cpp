@@ -98,6 +98,20 @@ TEST(VideoEncoder, EncoderCanvasIsTheDecodersForEveryFrame) {
     std::filesystem::remove_all(dir);
 }
 
+// Frame seeds are SplitMix64's outputs from the --seed: the values of the generator written out
+// step by step (index + 1 increments of the golden gamma, then the output mix), so that shared
+// code cannot change what a given --seed paints.
+TEST(VideoEncoder, FrameSeedIsSplitMix64) {
+    for (uint64_t seed : {uint64_t(0), uint64_t(1), uint64_t(42), ~uint64_t(0)})
+        for (uint32_t index : {0u, 1u, 7u, 1000u, 0xFFFFFFFFu}) {
+            uint64_t z = seed + 0x9E3779B97F4A7C15ull * (uint64_t(index) + 1);
+            z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+            z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+            EXPECT_EQ(video::frame_seed(seed, index), z ^ (z >> 31)) << seed << " " << index;
+        }
+    EXPECT_EQ(video::frame_seed(0, 0), 0xe220a8397b1dcdafull);  // SplitMix64's first output from 0
+}
+
 TEST(VideoEncoder, SameSeedSameBytesWhateverTheThreads) {
     const auto dir = spt_test::temp_dir("determinism");
     const uint32_t w = 80, h = 48;

@@ -8,6 +8,7 @@
 
 #include "paint/orientation.hpp"
 #include "spt/reader.hpp"
+#include "spt/replay.hpp"
 #include "video/stroke_cull.hpp"
 
 namespace spt::video {
@@ -27,11 +28,9 @@ cv::Mat wrap_rgb(uint32_t w, uint32_t h, const uint8_t* rgb) {
 }  // namespace
 
 uint64_t frame_seed(uint64_t seed, uint32_t index) {
-    // splitmix64 of the pair: well mixed, and the same on every platform.
-    uint64_t z = seed + 0x9E3779B97F4A7C15ull * (uint64_t(index) + 1);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
+    // SplitMix64's state after index + 1 steps from `seed` (mix64 adds the last step's
+    // increment): well mixed, and the same on every platform.
+    return replay::mix64(seed + 0x9E3779B97F4A7C15ull * uint64_t(index));
 }
 
 Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptions& opts, uint32_t width,
