@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "spt/coding.hpp"
 #include "spt/limits.hpp"
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
 #include "spt/types.hpp"
-#include "spt/coding.hpp"
 #include "validate.hpp"
 
 namespace spt::detail {
