@@ -1,4 +1,8 @@
 // Coding 0 frame bodies (SPEC.md 6): fixed-size little-endian records.
+#include <bit>
+#include <cstddef>
+#include <cstring>
+
 #include "byte_io.hpp"
 #include "frame_coding.hpp"
 #include "stamp_frame.hpp"
@@ -122,15 +126,29 @@ constexpr size_t kMinStrokeBytes = 16;
 // (little-endian), R, G, B, A.
 bool fill_stamps(const void* ctx, size_t first, size_t n, StampStroke* out) {
     const uint8_t* q = static_cast<const uint8_t*>(ctx) + 16 * first;
+    // Where StampStroke has the record's layout from byte 4 on (x, y, colour), as on every
+    // little-endian host, a record is one 16-byte copy and a fix of its first word (kind, set,
+    // template, orientation -> set, template, orientation): the player's path copies 30,000 of
+    // them a frame.
+    constexpr bool kSameTail = std::endian::native == std::endian::little && sizeof(StampStroke) == 16 &&
+                               offsetof(StampStroke, x) == 4 && offsetof(StampStroke, y) == 8 &&
+                               offsetof(StampStroke, color) == 12 && offsetof(StampStroke, orient) == 2;
     for (size_t i = 0; i < n; ++i, q += 16) {
         if (q[0] != 0) return false;
         StampStroke& t = out[i];
-        t.set = q[1];
-        t.tmpl = q[2];
-        t.orient = q[3];
-        t.x = int32_t(load_u32(q + 4));
-        t.y = int32_t(load_u32(q + 8));
-        t.color = Rgba8{q[12], q[13], q[14], q[15]};
+        if constexpr (kSameTail) {
+            std::memcpy(static_cast<void*>(&t), q, 16);
+            t.set = q[1];
+            t.tmpl = q[2];
+            t.orient = q[3];
+        } else {
+            t.set = q[1];
+            t.tmpl = q[2];
+            t.orient = q[3];
+            t.x = int32_t(load_u32(q + 4));
+            t.y = int32_t(load_u32(q + 8));
+            t.color = Rgba8{q[12], q[13], q[14], q[15]};
+        }
     }
     return true;
 }
