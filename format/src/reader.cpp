@@ -1,4 +1,4 @@
-// Reader (SPEC.md 9.2): opens through IEND -> indx when they are sound, otherwise scans the
+// Reader (SPEC.md 9.3): opens through IEND -> indx when they are sound, otherwise scans the
 // chunks and keeps every complete, CRC-valid frame. Limits are checked before allocation.
 // The live list of a frame and render_frame (a player's calls) are in frame_player.cpp.
 #include <algorithm>

@@ -19,7 +19,7 @@ namespace spt::detail {
 
 constexpr int kColorCellShift = 3;  // colour prediction cells are 8x8 pixels
 
-// Position of one axis (SPEC.md 7.4.3).
+// Position of one axis (SPEC.md 7.4, pos()).
 struct PosModel {
     uint16_t inside = kProbInit;
     BitTree pix;
@@ -207,7 +207,11 @@ SPT_CODER_INLINE bool code_affine_matrix(C& c, StrokeCoderState& st, AffineStrok
     }
     if (could_shift_more) { err.set("affine matrix shift is not the largest"); return false; }
     if (axis) { t.b = t.c = 0; if (iso) t.d = t.a; else if (t.a == t.d) { err.set("affine matrix form: a = d coded in full"); return false; } }
-    else if (sim) { t.d = t.a; t.b = -t.c; }
+    else if (sim) {
+        if (t.c == 0) { err.set("affine matrix form: an axis-aligned matrix coded as a similarity"); return false; }
+        t.d = t.a;
+        t.b = -t.c;
+    }
     else if ((t.b == 0 && t.c == 0) || (t.d == t.a && t.b == -t.c)) { err.set("affine matrix form: a special form coded in full"); return false; }
     if (int64_t(t.a) * t.d - int64_t(t.b) * t.c == 0) { err.set("affine matrix is singular"); return false; }
     return true;
