@@ -11,7 +11,7 @@ build="${SPT_BUILD_DIR:-build}"
 core_pkgs=(build-essential cmake ninja-build pkg-config git python3
            libopenimageio-dev openimageio-tools libopencv-dev libopenexr-dev
            libcli11-dev nlohmann-json3-dev libpugixml-dev libpng-dev zlib1g-dev)
-test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy
+test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy ccache
            blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils
            mmdebstrap time              # Blender 4.3 and 5.2 roots (tests/blender/blender_root.sh)
            emscripten node-acorn nodejs   # the web player (web/) and its Chromium test
@@ -31,7 +31,10 @@ install_pkgs() {
 
 build() {
   local tests="$1"; shift
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSPT_BUILD_TESTS="$tests" "$@" >/dev/null
+  # ccache (when installed) makes a rebuild of an unchanged tree, in another clone too, a copy.
+  local launcher=()
+  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSPT_BUILD_TESTS="$tests" "${launcher[@]}" "$@" >/dev/null
   cmake --build "$build" --parallel "$(nproc)"
 }
 
