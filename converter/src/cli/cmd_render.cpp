@@ -13,6 +13,7 @@
 #include "io/progress.hpp"
 #include "io/sequence.hpp"
 #include "io/spt_file.hpp"
+#include "spt/concat.hpp"
 #include "spt/spt.hpp"
 
 namespace spt::cli {
@@ -85,9 +86,12 @@ int cmd_render(int argc, char** argv) {
                 "an image (.png .exr .tif .jpg ...: one frame), a sequence pattern (out.####.png, "
                 "out.%04d.exr, out.@@@.tif) or a video (.mp4 .mov .mkv .avi: a quick preview at the "
                 "file's fps)", 'o')
-        .option("frames", "RANGE", "frames to render, by file frame index: \"A-B\", \"A\", \"1-10,20\", \"0-100x5\" (default: all)")
-        .option("frame", "N", "the frame of a single-image output (default 0)")
-        .option("start", "N", "number the output files from N: file frame i is written as i + N (default 0)")
+        .option("frames", "RANGE", "frames to render, by frame number: \"A-B\", \"A\", \"1-10,20\", \"0-100x5\" "
+                                   "(default: all). Numbers are the source's (a file painted from shot.1001.exr... "
+                                   "starts at 1001; spt info shows them), else 0-based")
+        .option("frame", "N", "the frame of a single-image output, by frame number (default: the first)")
+        .option("start", "N", "number the output files from N: the file's i-th frame is written as i + N "
+                              "(default: the frame numbers, so shot.1001.exr... renders to out.1001.png...)")
         .option("progress", "MODE", io::kProgressHelp, 0, "auto")
         .epilog("Frames are reached through the index: rendering frames 500-510 decodes from the "
                 "key frame at or before 500 only. PNG, TIFF and JPEG are written 8-bit sRGB; EXR "
@@ -100,8 +104,8 @@ int cmd_render(int argc, char** argv) {
     const std::string path = args.pos("FILE.spt");
     const std::string out = args.get("output");
     if (out.empty()) return args.usage_error("missing -o OUT");
-    long start = 0, single = -1;
-    if (!args.get_long("start", start, 0, 999999999) || !args.get_long("frame", single, 0, 0xFFFFFFFEL)) return 2;
+    long start = -1, single = -1;
+    if (!args.get_long("start", start, 0, 999999999) || !args.get_long("frame", single, 0, 0x1FFFFFFFDL)) return 2;
     if (args.has("frame") && args.has("frames")) return args.usage_error("give --frame or --frames, not both");
     auto range = io::parse_frame_range(args.has("frame") ? args.get("frame") : args.get("frames"));
     if (!range) return args.usage_error(range.error().message);
@@ -118,23 +122,29 @@ int cmd_render(int argc, char** argv) {
     const auto& frames = r.frames();
     const Header& h = r.info().header;
     if (frames.empty()) return fail(path + ": the file holds no frames");
-    const long last = long(frames.size()) - 1;
+    // Frame numbers (SPEC.md 3.3 source.first_frame): frame i is number first + i.
+    const long first = long(first_frame_number(r.info()));
+    const long last = first + long(frames.size()) - 1;
+    const std::string have = path + ": has frames " + std::to_string(first) + "-" + std::to_string(last);
+    if (start < 0) start = first;
 
     std::vector<long> todo;
     if (!sequence && !video && !args.has("frames")) {
-        todo.push_back(single < 0 ? 0 : single);
+        todo.push_back(single < 0 ? first : single);
+        if (todo.front() < first || todo.front() > last)
+            return fail(have + "; there is no frame " + std::to_string(todo.front()));
     } else {
-        todo = range->frames_within(0, last);
+        todo = range->frames_within(first, last);
     }
     if (!sequence && !video && todo.size() > 1)
         return args.usage_error("--frames names " + std::to_string(todo.size()) +
                                 " frames but -o " + out + " has no frame placeholder (####, %04d, @)");
     for (const auto& [a, b] : range->spans)
-        if (b > last)
-            return fail(path + ": has frames 0-" + std::to_string(last) + "; the range asks for frame " +
-                        std::to_string(b));
+        if (b > last || a < first)
+            return fail(have + "; the range asks for frame " + std::to_string(b > last ? b : a));
     if (todo.empty() || todo.front() > last)
-        return fail(path + ": has frames 0-" + std::to_string(last) + "; nothing to render in that range");
+        return fail(have + "; nothing to render in that range");
+    for (long& f : todo) f -= first;  // file frame positions from here on
 
     if (auto rc = Renderer::create(h, r.info().templates); !rc) return fail(io::describe_error(path, rc.error()));
     Canvas canvas(h.width, h.height, h.background);
@@ -160,7 +170,7 @@ int cmd_render(int argc, char** argv) {
             Status w = io::write_image(name, canvas);
             if (!w) return fail(w.error().message);
         }
-        progress.update(double(++done), "frame " + std::to_string(f));
+        progress.update(double(++done), "frame " + std::to_string(f + first));
     }
     if (video && !vout.finish(err)) return fail(err);
     progress.finish(true, std::to_string(done) + " frames");
