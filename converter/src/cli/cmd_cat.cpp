@@ -40,18 +40,7 @@ int cmd_cat(int argc, char** argv) {
         }
     }
 
-    plan::ShotTag first;
-    std::string first_path;
-    ConcatOptions co;
-    co.check_part = [&](size_t pos, const std::string& path, const StreamInfo& info, uint64_t frames) -> Status {
-        if (pos == 0) {
-            Result<plan::ShotTag> t = plan::read_shot_tag(path, info);
-            if (!t) return t.error();
-            first = *t;
-            first_path = path;
-        }
-        return plan::check_join_part(pos, parts.size(), path, info, frames, first, first_path);
-    };
+    const ConcatOptions co = plan::join_options(parts.size());
     Result<ConcatReport> rep = concatenate(parts, out, co);
     if (!rep) {
         std::fprintf(stderr, "spt cat: %s\n", rep.error().message.c_str());

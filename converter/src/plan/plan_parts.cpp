@@ -2,6 +2,10 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <memory>
+
+#include "plan/plan.hpp"
+#include "spt/reader.hpp"
 
 namespace spt::plan {
 
@@ -89,6 +93,48 @@ Status check_join_part(size_t pos, size_t count, const std::string& path, const 
                                                      std::to_string(frames) + " of its " + std::to_string(want) +
                                                      " frames (" + std::to_string(tag->first) + "-" +
                                                      std::to_string(tag->last) + "): it was interrupted; paint it again");
+    return {};
+}
+
+ConcatOptions join_options(size_t parts) {
+    struct First {
+        ShotTag tag;
+        std::string path;
+    };
+    auto first = std::make_shared<First>();
+    ConcatOptions co;
+    co.check_part = [first, parts](size_t pos, const std::string& path, const StreamInfo& info, uint64_t frames) -> Status {
+        if (pos == 0) {
+            Result<ShotTag> t = read_shot_tag(path, info);
+            if (!t) return t.error();
+            first->tag = *t;
+            first->path = path;
+        }
+        return check_join_part(pos, parts, path, info, frames, first->tag, first->path);
+    };
+    return co;
+}
+
+Status verify_shot(const Plan& plan, size_t shot, const std::string& path) {
+    if (shot >= plan.shots.size()) return make_error(Code::InvalidArgument, path + ": the plan has no shot " + std::to_string(shot));
+    Result<std::unique_ptr<Reader>> r = Reader::open(path);
+    if (!r) return make_error(r.error().code, r.error().message.rfind(path, 0) == 0 ? r.error().message : path + ": " + r.error().message);
+    Reader& rd = **r;
+    if (!rd.complete()) return make_error(Code::Truncated, path + ": incomplete (no end chunk)");
+    if (!rd.warnings().empty()) return make_error(Code::Corrupt, path + ": " + rd.warnings().front().message);
+    Result<ShotTag> tag = read_shot_tag(path, rd.info());
+    if (!tag) return tag.error();
+    const Shot& s = plan.shots[shot];
+    if (!tag->is_shot || tag->plan_id != plan.id || tag->shot != shot || tag->shots != plan.shots.size() ||
+        tag->first != s.first || tag->last != s.last)
+        return make_error(Code::InvalidArgument, path + ": is not shot " + std::to_string(shot) + " of plan " + plan.id);
+    if (rd.frames().size() != s.frames())
+        return make_error(Code::InvalidArgument, path + ": holds " + std::to_string(rd.frames().size()) + " of its " +
+                                                     std::to_string(s.frames()) + " frames");
+    for (size_t i = 0; i < rd.frames().size(); ++i) {
+        Result<const std::vector<Stroke>*> live = rd.strokes_at(i);
+        if (!live) return make_error(live.error().code, path + ": frame " + std::to_string(i) + ": " + live.error().message);
+    }
     return {};
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "spt/concat.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
 
@@ -34,5 +35,14 @@ Result<ShotTag> read_shot_tag(const std::string& path, const StreamInfo& info);
 // (`frames` of them). `first` is part 0's tag (read by the caller).
 Status check_join_part(size_t pos, size_t count, const std::string& path, const StreamInfo& info,
                        uint64_t frames, const ShotTag& first, const std::string& first_path);
+
+// Join options whose check_part runs check_join_part on each of `parts` parts.
+ConcatOptions join_options(size_t parts);
+
+struct Plan;
+// A shot file that a farm may keep instead of painting the shot again: complete, tagged as
+// shot `shot` of `plan`, holding all its frames, every frame decoded and applied (spt verify's
+// checks without rendering). The error says what is wrong, naming `path`.
+Status verify_shot(const Plan& plan, size_t shot, const std::string& path);
 
 }  // namespace spt::plan
