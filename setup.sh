@@ -13,7 +13,8 @@ core_pkgs=(build-essential cmake ninja-build pkg-config git python3
            libcli11-dev nlohmann-json3-dev libpugixml-dev libpng-dev zlib1g-dev)
 test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy
            blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils
-           libjxl-tools webp optipng)   # the last three: bench/ comparisons only
+           libjxl-tools webp optipng    # these three: bench/ comparisons only
+           slurm-wlm munge iproute2)    # the farm test's own Slurm cluster (tests/farm)
 
 install_pkgs() {
   local missing=()

@@ -15,5 +15,6 @@ int cmd_export(int argc, char** argv);
 int cmd_compare(int argc, char** argv);
 int cmd_cat(int argc, char** argv);
 int cmd_plan(int argc, char** argv);
+int cmd_farm(int argc, char** argv);
 
 }  // namespace spt::cli
