@@ -52,7 +52,8 @@ Status write_text(const std::string& path, const std::string& text) {
 std::string task_script(const SubmitOptions& o, const std::string& state, const std::string& plan) {
     std::ostringstream s;
     s << "#!/bin/bash\n"
-         "# spt farm task: paints shot $1 of the plan; written by spt farm, run by the farm's engine.\n"
+         "# spt farm task: paints shot $1 of the plan; written by spt farm, run by the farm's engine\n"
+         "# (which may set SPT_FARM_THREADS to the CPUs it gave the task).\n"
          "k=\"$1\"\n"
          "run=" << shell_quote(run_dir(state)) << "\n"
          "out=$(printf " << shell_quote(state + "/shots/shot-%05d.spt") << " \"$k\")\n"
@@ -60,7 +61,7 @@ std::string task_script(const SubmitOptions& o, const std::string& state, const 
          "for attempt in $(seq 1 " << (o.retries + 1) << "); do\n"
          "  echo \"spt farm: shot $k attempt $attempt on $(hostname) at $(date -u +%FT%TZ)\"\n"
          "  " << shell_quote(o.spt) << " paint --plan " << shell_quote(plan)
-      << " --shot \"$k\" -o \"$out\" --progress plain &\n"
+      << " --shot \"$k\" -o \"$out\" --progress plain ${SPT_FARM_THREADS:+--threads \"$SPT_FARM_THREADS\"} &\n"
          "  pid=$!\n"
          "  echo \"$pid\" > \"$run/shot-$k.pid\"\n"
          "  wait \"$pid\"; rc=$?\n"

@@ -34,7 +34,9 @@ public:
             // One script for the array: task i runs the command of shot i.
             const std::string script = job.state_dir + "/slurm_tasks.sh";
             std::ofstream s(script, std::ios::trunc);
-            s << "#!/bin/bash\n# spt farm: one shot per array task (array index = shot)\ncase \"$SLURM_ARRAY_TASK_ID\" in\n";
+            s << "#!/bin/bash\n# spt farm: one shot per array task (array index = shot)\n"
+                 "export SPT_FARM_THREADS=\"${SLURM_CPUS_PER_TASK:-}\"  # --cpus-per-task, when given\n"
+                 "case \"$SLURM_ARRAY_TASK_ID\" in\n";
             std::string list;
             for (const Task& t : job.tasks) {
                 s << "  " << t.shot << ") exec " << shell_line(t.command) << " ;;\n";
