@@ -5,7 +5,6 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "io/spt_file.hpp"
 #include "plan/plan_parts.hpp"
 #include "spt/concat.hpp"
 
@@ -34,8 +33,8 @@ int cmd_cat(int argc, char** argv) {
     for (const std::string& p : parts) {
         if (p == out || (fs::exists(out, ec) && fs::equivalent(p, out, ec)))
             return args.usage_error("-o " + out + " is also a part");
-        if (auto r = io::open_spt(p); !r) {  // a missing file or a folder, in spt's words
-            std::fprintf(stderr, "spt cat: %s\n", r.error().message.c_str());
+        if (!fs::is_regular_file(p, ec)) {  // before libspt, in plain words
+            std::fprintf(stderr, "spt cat: %s: %s\n", p.c_str(), fs::exists(p, ec) ? "is not a file" : "no such file");
             return 1;
         }
     }
