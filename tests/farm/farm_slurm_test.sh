@@ -41,12 +41,16 @@ cd "$tmp"
 shots=$(grep -c '"starts_at_cut"' shot.plan.json)
 [ "$shots" = 4 ] || die "expected a plan of 4 shots, got $shots"
 
-# Kill shot 1's painter mid-shot, once, by its pid (the task wrapper writes it).
+# Kill shot 1's painter mid-shot, once, by its pid (the task wrapper writes it): as soon as its
+# partial output holds a finished frame (the header alone is a few hundred bytes; a key frame
+# of 4,000 strokes several KB), so the kill lands inside the shot on any machine.
 killer() {
-  local pidf="$tmp/shot.plan.farm/run/shot-1.pid"
-  for _ in $(seq 600); do [ -s "$pidf" ] && break; sleep 0.1; done
+  local pidf="$tmp/shot.plan.farm/run/shot-1.pid" part="$tmp/shot.plan.farm/shots/shot-00001.spt.partial"
+  for _ in $(seq 1200); do
+    [ -s "$pidf" ] && [ -f "$part" ] && [ "$(stat -c %s "$part" 2>/dev/null || echo 0)" -gt 3000 ] && break
+    sleep 0.05
+  done
   [ -s "$pidf" ] || { echo "killer: shot 1 never started" > "$tmp/killer.txt"; return; }
-  sleep 0.4
   local pid; pid="$(cat "$pidf" 2>/dev/null || true)"
   if [ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; then echo "killed $pid" > "$tmp/killer.txt"
   else echo "killer: shot 1 ended before it could be killed" > "$tmp/killer.txt"; fi
