@@ -5,8 +5,9 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "io/sequence.hpp"
+#include "plan/gray_frames.hpp"
 #include "video/cut_detect.hpp"
-#include "video/frame_source.hpp"
 #include "video/video_encoder.hpp"
 #include "video/video_paint.hpp"
 
@@ -21,9 +22,9 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
     if (!range->empty() && (range->spans.size() != 1 || range->step(0) != 1))
         return make_error(Code::InvalidArgument, "--frames: a plan takes one range A-B of consecutive frames, got '" +
                                                      o.frames + "'");
-    Result<std::unique_ptr<video::FrameSource>> src = video::open_source(o.input, o.frames, o.skip_bad_frames);
+    Result<std::unique_ptr<GrayFrames>> src = open_gray_frames(o.input, o.frames, o.skip_bad_frames);
     if (!src) return src.error();
-    video::FrameSource& source = **src;
+    GrayFrames& source = **src;
 
     Plan p;
     p.spt_version = o.spt_version;
@@ -49,31 +50,28 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
     co.window = o.cut_window;
     video::CutDetector cuts(co);
     progress.set_total(double(source.expected_frames()));
-    video::SourceFrame frame;
     cv::Mat gray;
-    long prev = -1;
+    long number = 0, prev = -1;
     uint64_t n = 0;
     for (;;) {
-        Result<bool> got = source.next(frame);
+        Result<bool> got = source.next(number, gray);
         if (!got) return got.error();
         if (!*got) break;
-        if (prev >= 0 && frame.number != prev + 1)
-            return make_error(Code::InvalidArgument, source.describe() + ": frame " + std::to_string(frame.number) +
+        if (prev >= 0 && number != prev + 1)
+            return make_error(Code::InvalidArgument, source.describe() + ": frame " + std::to_string(number) +
                                                          " follows frame " + std::to_string(prev) +
                                                          ": a plan needs consecutive frame numbers");
         if (n == 0) {
-            p.first = frame.number;
-            p.width = frame.image.width;
-            p.height = frame.image.height;
+            p.first = number;
+            p.width = uint32_t(gray.cols);
+            p.height = uint32_t(gray.rows);
         }
         // The painter's detector on the painter's gray (video_encoder.cpp add_frame).
-        cv::Mat rgb(int(frame.image.height), int(frame.image.width), CV_8UC3, frame.image.rgb.data());
-        cv::cvtColor(rgb, gray, cv::COLOR_RGB2GRAY);
         const video::CutScore s = cuts.push(gray);
-        if (n == 0 || s.cut) p.cuts.push_back(frame.number);
-        prev = frame.number;
+        if (n == 0 || s.cut) p.cuts.push_back(number);
+        prev = number;
         ++n;
-        progress.update(double(n), "frame " + std::to_string(frame.number));
+        progress.update(double(n), "frame " + std::to_string(number));
     }
     if (n == 0) return make_error(Code::IoError, source.describe() + ": no frames to plan");
     p.last = prev;
