@@ -15,6 +15,7 @@ test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy ccache
            blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils
            mmdebstrap time              # Blender 4.3 and 5.2 roots (tests/blender/blender_root.sh)
            emscripten node-acorn nodejs   # the web player (web/) and its Chromium test
+           slurm-wlm munge iproute2     # the farm test's own Slurm cluster (tests/farm)
            libjxl-tools webp optipng)   # the last three: bench/ comparisons only
 
 install_pkgs() {

@@ -149,7 +149,10 @@ Args& Args::positional(const std::string& name, const std::string& help, bool re
     CLI::Option* o = impl_->app.add_option(name);
     o->description(required ? help : help + " (optional)");
     o->type_name("");
-    if (variadic) o->expected(required ? 1 : 0, CLI::detail::expected_max_vector_size);
+    if (variadic)
+        o->expected(required ? 1 : 0, CLI::detail::expected_max_vector_size)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+            ->allow_extra_args();
     if (required) o->required();
     impl_->pos.push_back({name, o});
     return *this;

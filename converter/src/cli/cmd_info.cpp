@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "io/json.hpp"
 #include "io/spt_file.hpp"
+#include "spt/concat.hpp"
 #include "spt/spt.hpp"
 
 namespace spt::cli {
@@ -65,14 +66,15 @@ int cmd_info(int argc, char** argv) {
             "decisions; stored: exact bytes).\n\n"
             "JSON keys (stable): file, file_bytes, format_version, complete, has_index, canvas "
             "{width, height}, fps {num, den, value}, frame_count (header value, null when "
-            "unknown), frames_found, duration_seconds, color, background [r, g, b], sets "
+            "unknown), frames_found, first_frame_number (the source's number of frame 0, SPEC.md 3.3; 0 "
+            "when the file has none), duration_seconds, color, background [r, g, b], sets "
             "[{width, height}], orientations [{cos_q14, sin_q14, degrees}], templates [{kind, "
             "name, width, height}], metadata {key: value}, rois [{first_frame, last_frame, x, y, "
             "w, h}], key_frames [index...], strokes {added, removed, kinds {stamp, affine, curve, "
             "polygon} (added strokes by kind; absent with --no-fields), max_live (with --frames)}, "
             "bytes {total, header, frames, strokes, motion, framing, tail}, fields {name: "
             "bytes} (absent with --no-fields), warnings [text], and with --frames: frame_list "
-            "[{index, type, coding, offset, bytes, stroke_bytes, motion_bytes, added, removed, "
+            "[{index, number (first_frame_number + index), type, coding, offset, bytes, stroke_bytes, motion_bytes, added, removed, "
             "live}].");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     const std::string path = args.pos("FILE.spt");
@@ -85,6 +87,7 @@ int cmd_info(int argc, char** argv) {
     }
     Reader& r = **opened;
     const StreamInfo& info = r.info();
+    const uint32_t first_number = first_frame_number(info);  // SPEC.md 3.3 source.first_frame
     const Header& h = info.header;
     const auto& frames = r.frames();
     const Sections sec = sections(r);
@@ -138,6 +141,7 @@ int cmd_info(int argc, char** argv) {
         if (h.frame_count == kUnknownFrameCount) j.key("frame_count").null();
         else j.kv("frame_count", h.frame_count);
         j.kv("frames_found", uint64_t(frames.size()));
+        j.kv("first_frame_number", first_number);
         j.kv("duration_seconds", fps > 0 ? double(frames.size()) / fps : 0.0);
         j.kv("color", color);
         j.key("background").arr().integer(h.background.r).integer(h.background.g).integer(h.background.b).end();
@@ -182,7 +186,7 @@ int cmd_info(int argc, char** argv) {
             j.key("frame_list").arr();
             for (size_t i = 0; i < frames.size(); ++i) {
                 const auto& f = frames[i];
-                j.obj().kv("index", f.index).kv("type", f.type == FrameType::Key ? "key" : "inter")
+                j.obj().kv("index", f.index).kv("number", uint64_t(first_number) + f.index).kv("type", f.type == FrameType::Key ? "key" : "inter")
                     .kv("coding", coding_name(f.coding)).kv("offset", f.offset)
                     .kv("bytes", f.chunk_bytes).kv("stroke_bytes", f.stroke_bytes).kv("motion_bytes", f.motion_bytes)
                     .kv("added", f.added).kv("removed", f.removed).kv("live", live[i]).end();
@@ -202,6 +206,10 @@ int cmd_info(int argc, char** argv) {
     std::printf("frames      %zu found", frames.size());
     if (h.frame_count != kUnknownFrameCount) std::printf(" (header says %u)", h.frame_count);
     if (fps > 0) std::printf(", %.2f s", double(frames.size()) / fps);
+    if (!frames.empty())
+        std::printf(", numbered %llu-%llu%s", (unsigned long long)first_number,
+                    (unsigned long long)(uint64_t(first_number) + frames.size() - 1),
+                    has_first_frame_number(info) ? " (source frames)" : "");
     std::printf(", %zu key frames\n", keys.size());
     std::printf("sets        %zu:", h.sets.size());
     for (const auto& s : h.sets) std::printf(" %ux%u", s.width, s.height);

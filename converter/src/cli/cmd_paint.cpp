@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/paint_options.hpp"
+#include "cli/paint_plan.hpp"
 #include "cli/paint_progress.hpp"
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
@@ -31,16 +32,16 @@ int fail(const std::string& msg) {
     return 1;
 }
 
-// Image sequences and videos: not painted by this command yet (the video encoder plugs in here).
+}  // namespace
+
 // Sequences and videos go to the video encoder (converter/src/video), with the same painting
 // options as a still.
-int paint_sequence(const PaintCommandOptions& o) {
+int video_options(const PaintCommandOptions& o, video::VideoPaintOptions& v) {
     if (!o.preview.empty() || !o.side_by_side.empty())
         return fail("--preview and --side-by-side are for still images; render a sequence with "
                     "'spt render " + o.output + " -o frame.####.png'");
     if (!o.set_sizes.empty())
         return fail("--set-sizes is not supported for sequences yet; use --sets N");
-    video::VideoPaintOptions v;
     v.input = o.input;
     v.output = o.output;
     v.frames = o.frames;
@@ -68,6 +69,14 @@ int paint_sequence(const PaintCommandOptions& o) {
         if (!t) return fail(t.error().message);
         v.templates = std::move(t.value());
     }
+    return -1;
+}
+
+namespace {
+
+int paint_sequence(const PaintCommandOptions& o) {
+    video::VideoPaintOptions v;
+    if (int rc = video_options(o, v); rc >= 0) return rc;
     io::Progress progress(o.progress, "paint", 0);
     return video::run_video_paint(v, progress);
 }
@@ -219,6 +228,8 @@ int paint_still(const PaintCommandOptions& o) {
 }  // namespace
 
 int cmd_paint(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)  // a farm plan's shots (plan_paint.cpp)
+        if (std::string(argv[i]) == "--plan" || std::string(argv[i]).rfind("--plan=", 0) == 0) return paint_plan(argc, argv);
     PaintCommandOptions o;
     if (int rc = parse_paint_options(argc, argv, o); rc >= 0) return rc;
     std::error_code ec;

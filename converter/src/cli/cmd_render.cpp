@@ -14,6 +14,7 @@
 #include "io/progress.hpp"
 #include "io/sequence.hpp"
 #include "io/spt_file.hpp"
+#include "spt/concat.hpp"
 #include "spt/spt.hpp"
 
 namespace spt::cli {
@@ -87,9 +88,12 @@ int cmd_render(int argc, char** argv) {
                 "an image (.png .exr .tif .jpg ...: one frame), a sequence pattern (out.####.png, "
                 "out.%04d.exr, out.@@@.tif) or a video (.mp4 .mov .mkv .avi: a quick preview at the "
                 "file's fps)", 'o')
-        .option("frames", "RANGE", "frames to render, by file frame index: \"A-B\", \"A\", \"1-10,20\", \"0-100x5\" (default: all)")
-        .option("frame", "N", "the frame of a single-image output (default 0)")
-        .option("start", "N", "number the output files from N: file frame i is written as i + N (default 0)")
+        .option("frames", "RANGE", "frames to render, by frame number: \"A-B\", \"A\", \"1-10,20\", \"0-100x5\" "
+                                   "(default: all). Numbers are the source's (a file painted from shot.1001.exr... "
+                                   "starts at 1001; spt info shows them), else 0-based")
+        .option("frame", "N", "the frame of a single-image output, by frame number (default: the first)")
+        .option("start", "N", "number the output files from N: the file's i-th frame is written as i + N "
+                              "(default: the frame numbers, so shot.1001.exr... renders to out.1001.png...)")
         .option("progress", "MODE", io::kProgressHelp, 0, "auto")
         .epilog("Frames are reached through the index: rendering frames 500-510 decodes from the "
                 "key frame at or before 500 only. PNG, TIFF and JPEG are written 8-bit sRGB; EXR "
@@ -102,8 +106,8 @@ int cmd_render(int argc, char** argv) {
     const std::string path = args.pos("FILE.spt");
     const std::string out = args.get("output");
     if (out.empty()) return args.usage_error("missing -o OUT");
-    long start = 0, single = -1;
-    if (!args.get_long("start", start, 0, 999999999) || !args.get_long("frame", single, 0, 0xFFFFFFFEL)) return 2;
+    long start = -1, single = -1;
+    if (!args.get_long("start", start, 0, 999999999) || !args.get_long("frame", single, 0, 0x1FFFFFFFDL)) return 2;
     if (args.has("frame") && args.has("frames")) return args.usage_error("give --frame or --frames, not both");
     auto range = io::parse_frame_range(args.has("frame") ? args.get("frame") : args.get("frames"));
     if (!range) return args.usage_error(range.error().message);
@@ -120,13 +124,18 @@ int cmd_render(int argc, char** argv) {
     const auto& frames = r.frames();
     const Header& h = r.info().header;
     if (frames.empty()) return fail(path + ": the file holds no frames");
-    const long last = long(frames.size()) - 1;
+    // Frame numbers (SPEC.md 3.3 source.first_frame): frame i is number first + i.
+    const long first = long(first_frame_number(r.info()));
+    const long last = first + long(frames.size()) - 1;
+    const std::string have = path + ": has frames " + std::to_string(first) + "-" + std::to_string(last);
+    if (start < 0) start = first;
 
     std::vector<long> todo;
     if (!sequence && !video && !args.has("frames")) {
-        todo.push_back(single < 0 ? 0 : single);
+        todo.push_back(single < 0 ? first : single);
+        if (todo.front() < first) return fail(have + "; there is no frame " + std::to_string(todo.front()));
     } else {
-        todo = range->frames_within(0, last);
+        todo = range->frames_within(first, last);
     }
     if (!sequence && !video && todo.size() > 1)
         return args.usage_error("--frames names " + std::to_string(todo.size()) +
@@ -140,23 +149,26 @@ int cmd_render(int argc, char** argv) {
         const uint64_t at = w && w->offset ? w->offset : r.file_size();
         std::string why = w ? io::describe_error(path, *w) : std::string("the file ends early");
         if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
-        lost = path + ": frame " + std::to_string(frames.size()) + " (byte offset " + std::to_string(at) +
+        lost = path + ": frame " + std::to_string(last + 1) + " (byte offset " + std::to_string(at) +
                ") could not be rendered: " + why;
     }
-    bool beyond = false;  // the request names frames past the last one found
-    for (const auto& [a, b] : range->spans) beyond = beyond || b > last;
-    if (single > last) beyond = true;
-    if (beyond && !frames_lost)
-        return fail(path + ": has frames 0-" + std::to_string(last) + "; the range asks for frame " +
-                    std::to_string(std::max(single, range->spans.empty() ? 0L : range->spans.back().second)));
+    long beyond = -1;  // the first frame asked for past the last one found
+    for (const auto& [a, b] : range->spans) {
+        if (a < first) return fail(have + "; the range asks for frame " + std::to_string(a));
+        if (b > last && beyond < 0) beyond = b;
+    }
+    if (single > last) beyond = single;
+    if (beyond >= 0 && !frames_lost)
+        return fail(have + (single > last ? "; there is no frame " : "; the range asks for frame ") + std::to_string(beyond));
     // Lost frames were asked for: named past the last one found, or "every frame" (a sequence or
-    // a video without --frames; a single image without --frame is frame 0 only).
+    // a video without --frames; a single image without --frame is the first frame only).
     const bool all_asked = (sequence || video) && !args.has("frames");
-    const bool fail_after = frames_lost && (beyond || all_asked || todo.empty());
+    const bool fail_after = frames_lost && (beyond >= 0 || all_asked || todo.empty());
     if (todo.empty() || todo.front() > last) {
         if (fail_after) return fail(lost + "; nothing written");
-        return fail(path + ": has frames 0-" + std::to_string(last) + "; nothing to render in that range");
+        return fail(have + "; nothing to render in that range");
     }
+    for (long& f : todo) f -= first;  // file frame positions from here on
 
     if (auto rc = Renderer::create(h, r.info().templates); !rc) return fail(io::describe_error(path, rc.error()));
     Canvas canvas(h.width, h.height, h.background);
@@ -184,7 +196,7 @@ int cmd_render(int argc, char** argv) {
             Status w = io::write_image(name, canvas);
             if (!w) return fail(w.error().message);
         }
-        progress.update(double(++done), "frame " + std::to_string(f));
+        progress.update(double(++done), "frame " + std::to_string(f + first));
     }
     if (video && done == 0) vout.discard();
     else if (video && !vout.finish(err)) return fail(err);
@@ -192,7 +204,7 @@ int cmd_render(int argc, char** argv) {
     // request counted against what the file should hold.
     size_t asked = todo.size();
     if (frames_lost && h.frame_count != kUnknownFrameCount && (sequence || video))
-        asked = range->frames_within(0, long(h.frame_count) - 1).size();
+        asked = range->frames_within(first, first + long(h.frame_count) - 1).size();
     const std::string summary = "wrote " + std::to_string(done) + " of " + std::to_string(asked) + " frames";
     if (!first_bad.empty() || fail_after) {
         progress.finish(false, summary);

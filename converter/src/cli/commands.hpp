@@ -13,5 +13,8 @@ int cmd_paint(int argc, char** argv);
 int cmd_import(int argc, char** argv);
 int cmd_export(int argc, char** argv);
 int cmd_compare(int argc, char** argv);
+int cmd_cat(int argc, char** argv);
+int cmd_plan(int argc, char** argv);
+int cmd_farm(int argc, char** argv);
 
 }  // namespace spt::cli

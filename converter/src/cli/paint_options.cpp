@@ -168,11 +168,22 @@ void declare(Args& a) {
 
 }  // namespace
 
-int parse_paint_options(int argc, char** argv, PaintCommandOptions& o) {
-    Args a("paint", "paint an image, an image sequence or a video into a .spt file",
-           "spt paint IN -o OUT.spt [options]");
+int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const char* command) {
+    const bool plan = std::string(command) == "plan";
+    Args a(command, plan ? "plan a farm job: shots of a sequence or video, each a task" : "paint an image, an image sequence or a video into a .spt file",
+           plan ? "spt plan IN -o PLAN.json [--max-task-frames N] [paint options]" : "spt paint IN -o OUT.spt [options]");
     declare(a);
+    if (plan)
+        a.group("farm plan")
+            .option("max-task-frames", "N", "split shots longer than N frames into tasks of at most N, at forced key "
+                                            "frames (whole --keyframe-interval steps when one fits); 0 = at cuts only",
+                    0, "240");
     if (int rc = a.parse(argc, argv); rc >= 0) return rc;
+    if (plan && a.has("max-task-frames")) {
+        long m = 0;
+        if (!a.get_long("max-task-frames", m, 0, 100000000)) return 2;
+        o.max_task_frames = m;
+    }
     auto bad = [&](const std::string& msg) { return a.usage_error(msg); };
     auto v = [&](const char* name) { return a.get(name); };
     o.input = a.pos("IN");

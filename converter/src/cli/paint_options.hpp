@@ -49,6 +49,7 @@ struct PaintCommandOptions {
     uint64_t max_inter_strokes = 4000;    // --max-inter-strokes N
     int block_size = 16;                  // --motion-block N
     bool flow_orientation = false;        // --flow-orientation: new strokes along the motion
+    long max_task_frames = 240;           // spt plan --max-task-frames N (0: split at cuts only)
 
     // The options that shape the painting, canonically spelt (for the painter.options metadata):
     // no paths and no thread count, so that the file bytes do not depend on them.
@@ -58,6 +59,7 @@ struct PaintCommandOptions {
 // Parses argv (argv[0] is the command name) with the shared command-line layer (args.hpp).
 // Returns -1 when the command should run; otherwise the exit code to return at once: 0 after
 // --help, 2 after a usage error (printed to stderr).
-int parse_paint_options(int argc, char** argv, PaintCommandOptions& out);
+// `command` names the command in messages and --help (spt plan takes the same options).
+int parse_paint_options(int argc, char** argv, PaintCommandOptions& out, const char* command = "paint");
 
 }  // namespace spt::cli

@@ -267,7 +267,7 @@ Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, long source_numb
     cv::Mat gray;
     cv::cvtColor(wrap_rgb(w, h, rgb), gray, cv::COLOR_RGB2GRAY);
     r.cut_score = cuts_.push(gray);
-    r.cut = r.cut_score.cut;
+    r.cut = r.cut_score.cut && opts_.detect_cuts;
 
     Frame frame;
     frame.index = next_index_;

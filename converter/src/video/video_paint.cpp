@@ -1,5 +1,6 @@
 #include "video/video_paint.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -11,6 +12,7 @@
 #include "io/roi_file.hpp"
 #include "video/video_encoder.hpp"
 #include "spt/utf8.hpp"
+#include "spt/concat.hpp"
 
 namespace spt::video {
 
@@ -57,6 +59,12 @@ std::string options_text(const VideoPaintOptions& o) {
     return s.str();
 }
 
+// True when a --frames value selects consecutive frame numbers (one span, step 1, or all).
+bool frames_consecutive(const std::string& frames) {
+    Result<io::FrameRange> r = io::parse_frame_range(frames);
+    return r && (r->empty() || (r->spans.size() == 1 && r->step(0) == 1));
+}
+
 }  // namespace
 
 Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {
@@ -96,6 +104,13 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         {"painter.seed", std::to_string(opts.paint.seed)},
         {"painter.options", printable_text(options_text(opts))},
     };
+    // SPEC.md 3.3: the source's own frame numbers, when the painted frames are consecutive.
+    if (frame.number > 0 && frames_consecutive(opts.frames)) meta.emplace_back(kFirstFrameKey, std::to_string(frame.number));
+    for (const auto& [k, v] : opts.metadata) {
+        auto it = std::find_if(meta.begin(), meta.end(), [&](const auto& e) { return e.first == k; });
+        if (it != meta.end()) it->second = v;
+        else meta.emplace_back(k, v);
+    }
     VideoPaintOptions eo = opts;
     if (opts.target_bytes > 0) {
         // Per second: N / fps bytes a frame. Whole clip: N over the frames the source expects

@@ -79,6 +79,12 @@ struct VideoPaintOptions {
     bool target_bytes_per_second = false;
     double frame_byte_budget = 0;     // bytes per frame; 0 = no rate control
 
+    // Farm plans (converter/src/plan): with false, key frames come only from the first frame,
+    // the interval and repaint_key_fraction, never from the cut detector (the plan placed the cuts).
+    bool detect_cuts = true;
+    // Metadata entries written besides the painter's own; an entry of the same key replaces it.
+    std::vector<std::pair<std::string, std::string>> metadata;
+
     // Set from anywhere (signal handler, test) to stop after the current frame; the output then
     // holds every finished frame. run_video_paint installs SIGINT/SIGTERM handlers that set it.
     std::atomic<bool>* stop = nullptr;

@@ -1,0 +1,125 @@
+#include "cli/paint_plan.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/args.hpp"
+#include "plan/plan_parts.hpp"
+#include "spt/concat.hpp"
+#include "spt/version.hpp"
+
+namespace spt::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int fail(const std::string& msg) {
+    std::fprintf(stderr, "spt paint: %s\n", msg.c_str());
+    return 1;
+}
+
+const char* mode_name(io::ProgressMode m) {
+    switch (m) {
+        case io::ProgressMode::Auto: return "auto";
+        case io::ProgressMode::Plain: return "plain";
+        case io::ProgressMode::Json: return "json";
+        case io::ProgressMode::None: return "none";
+    }
+    return "auto";
+}
+
+}  // namespace
+
+int paint_shot(const plan::Plan& p, size_t k, const std::string& output, int threads, io::ProgressMode mode) {
+    const plan::Shot& s = p.shots.at(k);
+    // The shot's command line: the plan's options, its frames and its seed.
+    std::vector<std::string> args = {"paint", p.input, "-o", output};
+    args.insert(args.end(), p.paint_args.begin(), p.paint_args.end());
+    args.insert(args.end(), {"--fps", p.fps, "--frames", std::to_string(s.first) + "-" + std::to_string(s.last),
+                             "--seed", std::to_string(s.seed), "--progress", mode_name(mode)});
+    if (threads > 0) args.insert(args.end(), {"--threads", std::to_string(threads)});
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    PaintCommandOptions o;
+    if (int rc = parse_paint_options(int(args.size()), argv.data(), o); rc >= 0)
+        return rc == 0 ? fail("the plan's paint_args ask for help") : rc;
+    video::VideoPaintOptions v;
+    if (int rc = video_options(o, v); rc >= 0) return rc;
+    v.detect_cuts = false;  // the plan placed the cuts; a shot has none inside
+    v.metadata = {{"painter.seed", std::to_string(p.seed)}};
+    for (auto& e : plan::shot_metadata(p.id, k, p.shots.size(), s.first, s.last)) v.metadata.push_back(std::move(e));
+    if (v.target_bytes > 0 && !v.target_bytes_per_second)  // a whole clip's budget: the shot's share
+        v.target_bytes = std::max<uint64_t>(64, uint64_t(std::llround(double(v.target_bytes) * double(s.frames()) /
+                                                                       double(p.frames()))));
+    io::Progress progress(mode, "paint shot " + std::to_string(k), 0);
+    video::VideoPaintReport rep;
+    const int rc = video::run_video_paint(v, progress, &rep);
+    std::error_code ec;
+    if (rc != 0 || rep.interrupted || rep.frames != s.frames()) {
+        // An interrupted shot keeps its finished frames in a valid file; a farm must not take
+        // it for a painted shot.
+        fs::remove(output, ec);
+        return rc != 0 ? rc : fail(output + ": shot " + std::to_string(k) + " painted " + std::to_string(rep.frames) +
+                                       " of its " + std::to_string(s.frames()) + " frames");
+    }
+    return 0;
+}
+
+int paint_plan(int argc, char** argv) {
+    Args a("paint", "paint the shots of a farm plan (spt plan)",
+           "spt paint --plan PLAN.json [--shot K] -o OUT.spt [--threads N] [--progress MODE]");
+    a.option("plan", "PLAN.json", "the plan (written by spt plan)")
+        .option("shot", "K", "paint only shot K (a farm task; 0-based); default: every shot, joined")
+        .option("output", "OUT.spt", "the shot file, or the whole painting", 'o')
+        .option("threads", "N", "worker threads (default: all cores); the bytes do not depend on it")
+        .option("progress", "MODE", io::kProgressHelp, 0, "auto")
+        .epilog("Every painting option comes from the plan. Shots painted apart (on any machines, "
+                "with any --threads) and joined with 'spt cat' in order give exactly the bytes of "
+                "the painting without --shot.");
+    if (int rc = a.parse(argc, argv); rc >= 0) return rc;
+    const std::string out = a.get("output");
+    if (out.empty()) return a.usage_error("missing -o OUT.spt");
+    io::ProgressMode mode;
+    if (!io::parse_progress_mode(a.get("progress"), mode)) return a.usage_error("--progress: expected auto, plain, json or none");
+    long threads = 0, shot = -1;
+    if (!a.get_long("threads", threads, 1, 1024) || !a.get_long("shot", shot, 0, 100000000)) return 2;
+    Result<plan::Plan> p = plan::read_plan(a.get("plan"));
+    if (!p) return fail(p.error().message);
+    if (p->spt_version != library_version())
+        return fail(a.get("plan") + ": written by spt " + p->spt_version + "; this is spt " + library_version() +
+                    ", whose painter may paint other bytes: plan again with this spt");
+    if (shot >= 0) {
+        if (size_t(shot) >= p->shots.size())
+            return a.usage_error("--shot " + std::to_string(shot) + ": the plan has shots 0-" + std::to_string(p->shots.size() - 1));
+        return paint_shot(*p, size_t(shot), out, int(threads), mode);
+    }
+    // Every shot in this process, then the join: the farm's result on one machine.
+    const fs::path dir = out + ".shots.partial";
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    fs::create_directories(dir, ec);
+    if (ec) return fail(dir.string() + ": cannot create: " + ec.message());
+    std::vector<std::string> parts;
+    for (size_t k = 0; k < p->shots.size(); ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "shot-%05zu.spt", k);
+        parts.push_back((dir / name).string());
+        if (int rc = paint_shot(*p, k, parts.back(), int(threads), mode); rc != 0) {
+            fs::remove_all(dir, ec);
+            return rc;
+        }
+    }
+    Result<ConcatReport> rep = concatenate(parts, out, plan::join_options(parts.size()));
+    fs::remove_all(dir, ec);
+    if (!rep) return fail(rep.error().message);
+    for (const std::string& w : rep->warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
+    if (mode != io::ProgressMode::Json && mode != io::ProgressMode::None)
+        std::fprintf(stderr, "spt paint: %s: %zu shots, %llu frames, %llu bytes\n", out.c_str(), parts.size(),
+                     (unsigned long long)rep->frames, (unsigned long long)rep->bytes);
+    return 0;
+}
+
+}  // namespace spt::cli

@@ -1,0 +1,142 @@
+#include "plan/gray_frames.hpp"
+
+#include <map>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <opencv2/imgproc.hpp>
+
+#include "io/image_io.hpp"
+#include "io/sequence.hpp"
+#include "video/frame_source.hpp"
+
+namespace spt::plan {
+
+namespace {
+
+// A FrameSource's RGB frames to gray (videos, folders, and files the fast path does not take).
+class SourceGray final : public GrayFrames {
+public:
+    explicit SourceGray(std::unique_ptr<video::FrameSource> s) : src_(std::move(s)) {}
+    Result<bool> next(long& number, cv::Mat& gray) override {
+        Result<bool> got = src_->next(frame_);
+        if (!got || !*got) return got;
+        number = frame_.number;
+        cv::Mat rgb(int(frame_.image.height), int(frame_.image.width), CV_8UC3, frame_.image.rgb.data());
+        cv::cvtColor(rgb, gray, cv::COLOR_RGB2GRAY);
+        return true;
+    }
+    bool has_fps() const override { return src_->has_fps(); }
+    Rational fps() const override { return src_->fps(); }
+    uint64_t expected_frames() const override { return src_->expected_frames(); }
+    std::string describe() const override { return src_->describe(); }
+
+private:
+    std::unique_ptr<video::FrameSource> src_;
+    video::SourceFrame frame_;
+};
+
+// Reads an 8-bit, 1- or 3-channel file without alpha as gray; false (nothing reported) for any
+// other file, which the caller then reads the painter's way.
+bool read_gray_bytes(const std::string& path, cv::Mat& gray, std::vector<uint8_t>& buf) {
+    OIIO::ImageSpec hint;
+    hint.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &hint);
+    if (!in) {
+        (void)OIIO::geterror();
+        return false;
+    }
+    const OIIO::ImageSpec& s = in->spec();
+    if (s.format != OIIO::TypeDesc::UINT8 || (s.nchannels != 1 && s.nchannels != 3) || s.alpha_channel >= 0 ||
+        s.depth > 1 || s.width <= 0 || s.height <= 0 || int64_t(s.width) * s.height > (int64_t(1) << 28))
+        return false;
+    buf.resize(size_t(s.width) * size_t(s.height) * size_t(s.nchannels));
+    if (!in->read_image(0, 0, 0, s.nchannels, OIIO::TypeDesc::UINT8, buf.data())) {
+        (void)in->geterror();
+        return false;
+    }
+    cv::Mat m(s.height, s.width, s.nchannels == 3 ? CV_8UC3 : CV_8UC1, buf.data());
+    if (s.nchannels == 3) cv::cvtColor(m, gray, cv::COLOR_RGB2GRAY);
+    else m.copyTo(gray);
+    return true;
+}
+
+class SequenceGray final : public GrayFrames {
+public:
+    SequenceGray(std::string pattern, std::vector<long> numbers, std::map<long, std::string> files, bool skip)
+        : pattern_(std::move(pattern)), numbers_(std::move(numbers)), files_(std::move(files)), skip_(skip) {}
+
+    Result<bool> next(long& number, cv::Mat& gray) override {
+        if (pos_ >= numbers_.size()) return false;
+        number = numbers_[pos_++];
+        auto f = files_.find(number);
+        std::string problem;
+        if (f == files_.end()) {
+            problem = io::format_frame(pattern_, number) + ": frame " + std::to_string(number) + " is missing from the sequence";
+        } else if (!read_gray_bytes(f->second, gray, buf_)) {
+            // The painter's reader (video/frame_source.cpp): floats, alpha, 16-bit; its messages.
+            Result<io::Image> img = io::read_image(f->second);
+            if (!img) {
+                problem = img.error().message;
+                if (problem.find(f->second) == std::string::npos) problem = f->second + ": " + problem;
+            } else {
+                cv::Mat rgb(int(img->height), int(img->width), CV_8UC3, img->rgb.data());
+                cv::cvtColor(rgb, gray, cv::COLOR_RGB2GRAY);
+            }
+        }
+        if (problem.empty() && !prev_.empty() && gray.size() != prev_.size())
+            problem = f->second + ": frame " + std::to_string(number) + " is " + std::to_string(gray.cols) + "x" +
+                      std::to_string(gray.rows) + ", the sequence is " + std::to_string(prev_.cols) + "x" +
+                      std::to_string(prev_.rows);
+        if (!problem.empty()) {
+            if (!skip_ || prev_.empty())
+                return make_error(Code::IoError, problem + (skip_ ? " (the first frame cannot be skipped)" : ""));
+            prev_.copyTo(gray);  // --skip-bad-frames: the painter repeats the previous frame
+            return true;
+        }
+        gray.copyTo(prev_);
+        return true;
+    }
+    bool has_fps() const override { return false; }
+    Rational fps() const override { return {}; }
+    uint64_t expected_frames() const override { return numbers_.size(); }
+    std::string describe() const override { return pattern_; }
+
+private:
+    std::string pattern_;
+    std::vector<long> numbers_;
+    std::map<long, std::string> files_;
+    bool skip_;
+    size_t pos_ = 0;
+    cv::Mat prev_;
+    std::vector<uint8_t> buf_;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, const std::string& frames,
+                                                     bool skip_bad_frames) {
+    if (io::is_sequence_pattern(input) && !io::is_video_file(input)) {
+        Result<io::FrameRange> range = io::parse_frame_range(frames);
+        if (!range) return range.error();
+        Result<std::vector<io::SequenceFile>> files = io::list_sequence(input, *range);
+        if (!files) return files.error();
+        if (files->empty()) return make_error(Code::IoError, input + ": no frames found");
+        std::map<long, std::string> by_number;
+        for (const auto& f : *files) by_number.emplace(f.frame, f.path);
+        // The numbers the painter's SequenceSource walks (video/frame_source.cpp).
+        long first = by_number.begin()->first, last = by_number.rbegin()->first;
+        if (!range->empty()) {
+            first = range->spans.front().first, last = range->spans.front().second;
+            for (const auto& s : range->spans) first = std::min(first, s.first), last = std::max(last, s.second);
+        }
+        std::vector<long> numbers = range->frames_within(first, last, 10'000'000);
+        return std::unique_ptr<GrayFrames>(
+            std::make_unique<SequenceGray>(input, std::move(numbers), std::move(by_number), skip_bad_frames));
+    }
+    Result<std::unique_ptr<video::FrameSource>> src = video::open_source(input, frames, skip_bad_frames);
+    if (!src) return src.error();
+    return std::unique_ptr<GrayFrames>(std::make_unique<SourceGray>(std::move(*src)));
+}
+
+}  // namespace spt::plan

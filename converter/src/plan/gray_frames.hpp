@@ -1,0 +1,31 @@
+// The frames of an input as the cut pass of `spt plan` needs them: 8-bit gray, in order, with
+// their source numbers. Sequences of 8-bit files without alpha are read straight as bytes
+// (the same bytes io::read_image gives, without its float strips, which were most of the
+// pass's time); everything else goes through video::FrameSource as the painter reads it.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+
+namespace spt::plan {
+
+class GrayFrames {
+public:
+    virtual ~GrayFrames() = default;
+    // The next frame; false at the end.
+    virtual Result<bool> next(long& number, cv::Mat& gray) = 0;
+    virtual bool has_fps() const = 0;
+    virtual Rational fps() const = 0;
+    virtual uint64_t expected_frames() const = 0;
+    virtual std::string describe() const = 0;
+};
+
+Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, const std::string& frames,
+                                                     bool skip_bad_frames);
+
+}  // namespace spt::plan

@@ -1,0 +1,230 @@
+#include "plan/plan.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/json.hpp"
+#include "spt_json/json.hpp"
+
+namespace spt::plan {
+
+namespace {
+
+void write_body(io::JsonWriter& j, const Plan& p, bool with_id) {
+    j.obj().kv("format", "spt-plan").kv("version", p.version);
+    if (with_id) j.kv("id", p.id);
+    j.kv("spt_version", p.spt_version).kv("input", p.input);
+    j.key("frames").obj().kv("first", int64_t(p.first)).kv("last", int64_t(p.last)).kv("count", p.frames()).end();
+    j.key("canvas").obj().kv("width", p.width).kv("height", p.height).end();
+    j.kv("fps", p.fps).kv("seed", std::to_string(p.seed));
+    j.kv("keyframe_interval", p.keyframe_interval).kv("max_task_frames", int64_t(p.max_task_frames));
+    j.key("cuts").arr();
+    for (long c : p.cuts) j.integer(c);
+    j.end().key("paint_args").arr();
+    for (const auto& a : p.paint_args) j.str(a);
+    j.end().key("shots").arr();
+    for (const Shot& s : p.shots) {
+        j.obj().kv("index", uint64_t(s.index)).kv("first", int64_t(s.first)).kv("last", int64_t(s.last))
+            .kv("frames", s.frames()).kv("seed", std::to_string(s.seed)).kv("starts_at_cut", s.starts_at_cut);
+        j.key("key_frames").arr();
+        for (long k : s.key_frames) j.integer(k);
+        j.end().end();
+    }
+    j.end().end();
+}
+
+struct Fields {
+    const json::Value& obj;
+    const std::string& src;
+    std::string err;
+    std::string at(const json::Value& v) const { return src + ":" + std::to_string(v.line) + ": "; }
+    const json::Value* need(const json::Value& o, const char* key, json::Type t) {
+        const json::Value* v = o.find(key);
+        if (!v) { if (err.empty()) err = at(o) + "missing \"" + key + "\""; return nullptr; }
+        if (v->type != t) { if (err.empty()) err = at(*v) + "\"" + key + "\" must be a " + json::type_name(t); return nullptr; }
+        return v;
+    }
+    bool integer(const json::Value& o, const char* key, long lo, long hi, long& out) {
+        const json::Value* v = need(o, key, json::Type::Number);
+        if (!v) return false;
+        char* end = nullptr;
+        errno = 0;
+        const long x = std::strtol(v->text.c_str(), &end, 10);
+        if (errno || *end || x < lo || x > hi) {
+            if (err.empty()) err = at(*v) + "\"" + key + "\" must be an integer " + std::to_string(lo) + ".." + std::to_string(hi);
+            return false;
+        }
+        out = x;
+        return true;
+    }
+    bool u64_text(const json::Value& o, const char* key, uint64_t& out) {
+        const json::Value* v = need(o, key, json::Type::String);
+        if (!v) return false;
+        char* end = nullptr;
+        errno = 0;
+        const unsigned long long x = std::strtoull(v->text.c_str(), &end, 10);
+        if (v->text.empty() || v->text[0] == '-' || errno || *end) {
+            if (err.empty()) err = at(*v) + "\"" + key + "\" must be a decimal string of an unsigned 64-bit integer";
+            return false;
+        }
+        out = x;
+        return true;
+    }
+    bool text(const json::Value& o, const char* key, std::string& out) {
+        const json::Value* v = need(o, key, json::Type::String);
+        if (v) out = v->text;
+        return v != nullptr;
+    }
+};
+
+}  // namespace
+
+std::string to_json(const Plan& p, bool with_id) {
+    io::JsonWriter j(true);
+    write_body(j, p, with_id);
+    return j.text() + "\n";
+}
+
+std::string compute_id(const Plan& p) {
+    const std::string t = to_json(p, false);
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (unsigned char c : t) h = (h ^ c) * 0x100000001b3ull;
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
+    return buf;
+}
+
+Result<Plan> parse_plan(const std::string& text, const std::string& src) {
+    Result<json::Value> doc = json::parse(text, src);
+    if (!doc) return doc.error();
+    const json::Value& root = *doc;
+    if (!root.is_object()) return make_error(Code::InvalidArgument, src + ": a plan is a JSON object");
+    Fields f{root, src, {}};
+    Plan p;
+    std::string format;
+    long v = 0;
+    if (f.text(root, "format", format) && format != "spt-plan")
+        return make_error(Code::InvalidArgument, src + ": \"format\" is '" + format + "', not 'spt-plan'");
+    if (f.integer(root, "version", 0, 1000000, v) && v != kPlanVersion)
+        return make_error(Code::Unsupported, src + ": plan version " + std::to_string(v) + "; this spt reads version " +
+                                                 std::to_string(kPlanVersion));
+    f.text(root, "id", p.id);
+    f.text(root, "spt_version", p.spt_version);
+    f.text(root, "input", p.input);
+    if (const json::Value* fr = f.need(root, "frames", json::Type::Object)) {
+        f.integer(*fr, "first", 0, 0x7FFFFFFF, p.first);
+        f.integer(*fr, "last", 0, 0x7FFFFFFF, p.last);
+    }
+    long w = 0, h = 0;
+    if (const json::Value* c = f.need(root, "canvas", json::Type::Object)) {
+        f.integer(*c, "width", 1, 1 << 20, w);
+        f.integer(*c, "height", 1, 1 << 20, h);
+    }
+    p.width = uint32_t(w);
+    p.height = uint32_t(h);
+    f.text(root, "fps", p.fps);
+    f.u64_text(root, "seed", p.seed);
+    long kfi = 0;
+    if (f.integer(root, "keyframe_interval", 1, 1000000, kfi)) p.keyframe_interval = int(kfi);
+    f.integer(root, "max_task_frames", 0, 0x7FFFFFFF, p.max_task_frames);
+    if (const json::Value* c = f.need(root, "cuts", json::Type::Array))
+        for (const json::Value& x : c->items) {
+            if (!x.is_number()) return make_error(Code::InvalidArgument, f.at(x) + "\"cuts\" holds frame numbers");
+            p.cuts.push_back(std::strtol(x.text.c_str(), nullptr, 10));
+        }
+    if (const json::Value* a = f.need(root, "paint_args", json::Type::Array))
+        for (const json::Value& x : a->items) {
+            if (!x.is_string()) return make_error(Code::InvalidArgument, f.at(x) + "\"paint_args\" holds strings");
+            p.paint_args.push_back(x.text);
+        }
+    if (const json::Value* shots = f.need(root, "shots", json::Type::Array)) {
+        for (const json::Value& s : shots->items) {
+            if (!s.is_object()) return make_error(Code::InvalidArgument, f.at(s) + "a shot is an object");
+            Shot shot;
+            long idx = 0;
+            f.integer(s, "index", 0, 0x7FFFFFFF, idx);
+            shot.index = size_t(idx);
+            f.integer(s, "first", 0, 0x7FFFFFFF, shot.first);
+            f.integer(s, "last", 0, 0x7FFFFFFF, shot.last);
+            f.u64_text(s, "seed", shot.seed);
+            if (const json::Value* c = f.need(s, "starts_at_cut", json::Type::Bool)) shot.starts_at_cut = c->boolean;
+            if (const json::Value* k = f.need(s, "key_frames", json::Type::Array))
+                for (const json::Value& x : k->items) shot.key_frames.push_back(std::strtol(x.text.c_str(), nullptr, 10));
+            if (!f.err.empty()) break;
+            // The shots cover the input in order, without gaps or overlaps.
+            const long expect = p.shots.empty() ? p.first : p.shots.back().last + 1;
+            if (shot.index != p.shots.size() || shot.first != expect || shot.last < shot.first)
+                return make_error(Code::InvalidArgument, f.at(s) + "shot " + std::to_string(idx) + " (" +
+                                                             std::to_string(shot.first) + "-" + std::to_string(shot.last) +
+                                                             ") does not follow on: expected shot " +
+                                                             std::to_string(p.shots.size()) + " from frame " +
+                                                             std::to_string(expect));
+            p.shots.push_back(std::move(shot));
+        }
+    }
+    if (!f.err.empty()) return make_error(Code::InvalidArgument, f.err);
+    if (p.shots.empty()) return make_error(Code::InvalidArgument, src + ": the plan has no shots");
+    if (p.shots.back().last != p.last)
+        return make_error(Code::InvalidArgument, src + ": the shots end at frame " + std::to_string(p.shots.back().last) +
+                                                     ", the plan's frames at " + std::to_string(p.last));
+    if (p.id != compute_id(p))
+        return make_error(Code::InvalidArgument, src + ": \"id\" is not the plan's checksum: the plan was edited by hand "
+                                                     "(write a new one with spt plan)");
+    return p;
+}
+
+Result<Plan> read_plan(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return make_error(Code::IoError, path + ": no such plan file");
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    if (!in && !in.eof()) return make_error(Code::IoError, path + ": cannot read");
+    return parse_plan(ss.str(), path);
+}
+
+Status write_plan(const Plan& p, const std::string& path) {
+    const std::string tmp = path + ".partial";
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) return make_error(Code::IoError, tmp + ": cannot create: " + std::strerror(errno));
+        out << to_json(p);
+        out.close();
+        if (!out) {
+            std::remove(tmp.c_str());
+            return make_error(Code::IoError, tmp + ": write failed");
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        return make_error(Code::IoError, path + ": cannot rename " + tmp + " into place: " + std::strerror(errno));
+    }
+    return {};
+}
+
+std::vector<std::pair<long, long>> split_shot(long first, long last, int keyframe_interval, long max_frames) {
+    const long n = last - first + 1;
+    if (max_frames <= 0 || n <= max_frames) return {{first, last}};
+    const long kfi = std::max(1, keyframe_interval);
+    // Split on whole key frame intervals when one fits in a task; else on max_frames.
+    const long unit = kfi <= max_frames ? kfi : 1;
+    const long units = (n + unit - 1) / unit;
+    const long per_task = std::max<long>(1, max_frames / unit);  // units a task may hold
+    const long pieces = (units + per_task - 1) / per_task;
+    std::vector<std::pair<long, long>> out;
+    long at = first;
+    for (long k = 0; k < pieces; ++k) {
+        // Spread the units evenly: piece k ends after unit floor((k + 1) * units / pieces).
+        const long end_unit = (k + 1) * units / pieces;
+        const long end = std::min(last, first + end_unit * unit - 1);
+        out.push_back({at, end});
+        at = end + 1;
+    }
+    return out;
+}
+
+}  // namespace spt::plan

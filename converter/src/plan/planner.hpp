@@ -1,0 +1,40 @@
+// `spt plan`'s pass over the input: every frame read once, the cut detector of the video
+// painter run on it, and the shots split into balanced tasks at forced key frames.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/progress.hpp"
+#include "plan/plan.hpp"
+#include "spt/result.hpp"
+
+namespace spt::plan {
+
+struct PlanOptions {
+    std::string input;               // as given; the plan records its absolute form
+    std::string frames;              // "" or one range "A-B" of source numbers
+    std::string fps;                 // "" = the container's, or 24
+    bool skip_bad_frames = false;
+    double cut_threshold = 6.0;      // the video painter's (VideoPaintOptions)
+    int cut_window = 12;
+    int keyframe_interval = 100;
+    long max_task_frames = 240;
+    uint64_t seed = 1;
+    std::vector<std::string> paint_args;
+    std::string spt_version;
+};
+
+struct PlanStats {
+    double seconds = 0;              // the whole pass
+    uint64_t frames = 0;
+};
+
+Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* stats = nullptr);
+
+// The seed of a shot starting at source frame `first` (splitmix64 of the plan's seed and it):
+// a shot's strokes depend on its own frames only, not on where other shots begin.
+uint64_t shot_seed(uint64_t plan_seed, long first);
+
+}  // namespace spt::plan

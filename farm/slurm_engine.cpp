@@ -1,0 +1,125 @@
+// Slurm: the tasks are one job array (array index = shot), the join one batch job with
+// --dependency=afterok on the array and --kill-on-invalid-dep=yes (a shot that finally failed
+// cancels it instead of leaving it pending forever). --requeue lets Slurm run a task again
+// after a node failure; failures of the task itself are retried by the task's wrapper
+// (farm_job.cpp) inside its allocation, because a job requeued with `scontrol requeue` waits
+// behind a BeginTime delay (measured here: still pending after 15 s).
+#include <fstream>
+#include <sstream>
+
+#include "farm/engine.hpp"
+#include "farm/process.hpp"
+
+namespace spt::farm {
+
+namespace {
+
+std::string trim(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\r')) s.pop_back();
+    // --parsable prints "id" or "id;cluster".
+    const size_t semi = s.find(';');
+    return semi == std::string::npos ? s : s.substr(0, semi);
+}
+
+class SlurmEngine final : public Engine {
+public:
+    std::string name() const override { return "slurm"; }
+
+    Result<Submitted> submit(const FarmJob& job) override {
+        Submitted ids;
+        ids.engine = name();
+        std::vector<std::string> common;
+        if (!job.partition.empty()) common.push_back("--partition=" + job.partition);
+        if (!job.tasks.empty()) {
+            // One script for the array: task i runs the command of shot i.
+            const std::string script = job.state_dir + "/slurm_tasks.sh";
+            std::ofstream s(script, std::ios::trunc);
+            s << "#!/bin/bash\n# spt farm: one shot per array task (array index = shot)\n"
+                 "export SPT_FARM_THREADS=\"${SLURM_CPUS_PER_TASK:-}\"  # --cpus-per-task, when given\n"
+                 "case \"$SLURM_ARRAY_TASK_ID\" in\n";
+            std::string list;
+            for (const Task& t : job.tasks) {
+                s << "  " << t.shot << ") exec " << shell_line(t.command) << " ;;\n";
+                list += (list.empty() ? "" : ",") + std::to_string(t.shot);
+            }
+            s << "esac\necho \"spt farm: no shot $SLURM_ARRAY_TASK_ID in this job\" >&2\nexit 2\n";
+            s.close();
+            if (!s) return make_error(Code::IoError, script + ": cannot write");
+            std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + job.name, "--array=" + list,
+                                             "--requeue", "--ntasks=1", "--output=" + job.state_dir + "/logs/shot-%a.log"};
+            argv.insert(argv.end(), common.begin(), common.end());
+            argv.insert(argv.end(), job.extra.begin(), job.extra.end());
+            argv.push_back(script);
+            Result<std::string> out = run_capture(argv);
+            if (!out) return out.error();
+            ids.tasks_id = trim(*out);
+        }
+        const std::string join_script = job.state_dir + "/slurm_join.sh";
+        {
+            std::ofstream s(join_script, std::ios::trunc);
+            s << "#!/bin/bash\n# spt farm: the join, after every shot\nexec " << shell_line(job.join) << "\n";
+            if (!s) return make_error(Code::IoError, join_script + ": cannot write");
+        }
+        std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + job.name + "-join", "--ntasks=1",
+                                         "--output=" + job.join_log};
+        if (!ids.tasks_id.empty())
+            argv.insert(argv.end(), {"--dependency=afterok:" + ids.tasks_id, "--kill-on-invalid-dep=yes"});
+        argv.insert(argv.end(), common.begin(), common.end());
+        argv.insert(argv.end(), job.extra.begin(), job.extra.end());
+        argv.push_back(join_script);
+        Result<std::string> out = run_capture(argv);
+        if (!out) {
+            if (!ids.tasks_id.empty()) run_capture({"scancel", ids.tasks_id});
+            return out.error();
+        }
+        ids.join_id = trim(*out);
+        return ids;
+    }
+
+    Result<std::map<size_t, QueueState>> queued_tasks(const Submitted& ids) override {
+        std::map<size_t, QueueState> m;
+        if (ids.tasks_id.empty()) return m;
+        // %K: array index; %t: compact state. A job id Slurm has forgotten is not an error.
+        Result<std::string> out = run_capture({"squeue", "--noheader", "--array", "--jobs=" + ids.tasks_id,
+                                               "--format=%K %t"});
+        if (!out) {
+            if (out.error().message.find("Invalid job id") != std::string::npos) return m;
+            return out.error();
+        }
+        std::istringstream in(*out);
+        std::string idx, st;
+        while (in >> idx >> st) {
+            char* end = nullptr;
+            const unsigned long k = std::strtoul(idx.c_str(), &end, 10);
+            if (*end) continue;  // a pending range "[3-5]" is listed per task with --array
+            m[size_t(k)] = (st == "R" || st == "CG") ? QueueState::Running : QueueState::Pending;
+        }
+        return m;
+    }
+
+    Result<bool> join_queued(const Submitted& ids) override {
+        if (ids.join_id.empty()) return false;
+        Result<std::string> out = run_capture({"squeue", "--noheader", "--jobs=" + ids.join_id, "--format=%t"});
+        if (!out) {
+            if (out.error().message.find("Invalid job id") != std::string::npos) return false;
+            return out.error();
+        }
+        return out->find_first_not_of(" \n") != std::string::npos;
+    }
+
+    Status cancel(const Submitted& ids) override {
+        std::vector<std::string> argv = {"scancel"};
+        if (!ids.tasks_id.empty()) argv.push_back(ids.tasks_id);
+        if (!ids.join_id.empty()) argv.push_back(ids.join_id);
+        if (argv.size() == 1) return {};
+        Result<std::string> out = run_capture(argv);
+        if (!out) return out.error();
+        return {};
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<Engine> make_slurm_engine() { return std::make_unique<SlurmEngine>(); }
+
+}  // namespace spt::farm

@@ -1,0 +1,74 @@
+// spt plan's cut pass reads 8-bit sequences as bytes (plan/gray_frames.hpp): its gray frames
+// must be exactly those of the painter's reader (video::FrameSource, then RGB -> gray), or the
+// plan would place cuts the painter's detector does not see. Also for the files it leaves to
+// the painter's reader (EXR), and for missing frames.
+#include "converter/cli_test_util.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+#include "io/image_io.hpp"
+#include "plan/gray_frames.hpp"
+#include "video/frame_source.hpp"
+
+namespace {
+
+using namespace spt_test;
+
+void expect_same_gray(const std::string& pattern, int frames) {
+    auto fast = spt::plan::open_gray_frames(pattern, "", false);
+    ASSERT_TRUE(fast.ok()) << fast.error().message;
+    auto slow = spt::video::open_source(pattern, "", false);
+    ASSERT_TRUE(slow.ok()) << slow.error().message;
+    int n = 0;
+    for (;; ++n) {
+        long number = -1;
+        cv::Mat g;
+        auto a = (*fast)->next(number, g);
+        spt::video::SourceFrame f;
+        auto b = (*slow)->next(f);
+        ASSERT_TRUE(a.ok()) << a.error().message;
+        ASSERT_TRUE(b.ok()) << b.error().message;
+        ASSERT_EQ(*a, *b);
+        if (!*a) break;
+        EXPECT_EQ(number, f.number);
+        cv::Mat rgb(int(f.image.height), int(f.image.width), CV_8UC3, f.image.rgb.data()), want;
+        cv::cvtColor(rgb, want, cv::COLOR_RGB2GRAY);
+        ASSERT_EQ(g.size(), want.size());
+        EXPECT_EQ(cv::countNonZero(g != want), 0) << pattern << " frame " << number;
+    }
+    EXPECT_EQ(n, frames);
+}
+
+TEST(PlanGrayFrames, EightBitSequencesReadAsThePainterReadsThem) {
+    const std::string media = SPT_MEDIA_DIR;
+    ASSERT_TRUE(fs::exists(media + "/exr/earth/earth.0003.exr")) << "the shared media are needed: " << media;
+    TempDir d;
+    for (int i = 1; i <= 3; ++i) {
+        auto img = spt::io::read_image(media + "/exr/earth/earth.000" + std::to_string(i) + ".exr");
+        ASSERT_TRUE(img.ok());
+        ASSERT_TRUE(spt::io::write_image(d.file("p." + std::to_string(40 + i) + ".png"), img->width, img->height,
+                                         img->rgb.data()).ok());
+    }
+    expect_same_gray(d.file("p.%02d.png"), 3);  // 8-bit RGB: the byte path
+    expect_same_gray(media + "/exr/earth/earth.####.exr", 48);  // half float: the painter's path
+    // A missing frame is an error naming it, or the previous frame with --skip-bad-frames.
+    fs::remove(d.file("p.42.png"));
+    auto g = spt::plan::open_gray_frames(d.file("p.%02d.png"), "", false);
+    ASSERT_TRUE(g.ok());
+    long number = 0;
+    cv::Mat m;
+    ASSERT_TRUE((*g)->next(number, m).ok());
+    auto miss = (*g)->next(number, m);
+    ASSERT_FALSE(miss.ok());
+    EXPECT_NE(miss.error().message.find("p.42.png: frame 42 is missing"), std::string::npos) << miss.error().message;
+    g = spt::plan::open_gray_frames(d.file("p.%02d.png"), "", true);
+    ASSERT_TRUE(g.ok());
+    cv::Mat first, second;
+    ASSERT_TRUE((*g)->next(number, first).ok());
+    auto rep = (*g)->next(number, second);
+    ASSERT_TRUE(rep.ok() && *rep);
+    EXPECT_EQ(number, 42);
+    EXPECT_EQ(cv::countNonZero(first != second), 0);
+}
+
+}  // namespace
