@@ -42,16 +42,29 @@ shots=$(grep -c '"starts_at_cut"' shot.plan.json)
 [ "$shots" = 4 ] || die "expected a plan of 4 shots, got $shots"
 
 # Kill shot 1's painter mid-shot, once, by its pid (the task wrapper writes it): as soon as its
-# partial output holds a finished frame (the header alone is a few hundred bytes; a key frame
-# of 4,000 strokes several KB), so the kill lands inside the shot on any machine.
+# output holds a finished frame (the header alone is a few hundred bytes; a key frame of 4,000
+# strokes several KB), so the kill lands inside the shot on any machine. spt writes outputs to an
+# unnamed file (O_TMPFILE) linked into place when complete, so the bytes written so far are read
+# through the painter's open descriptors; a named fallback (.partial) counts too.
+written() {
+  local pid="$1" part="$2" best=0 s fd
+  [ -f "$part" ] && best=$(stat -c %s "$part" 2>/dev/null || echo 0)
+  for fd in /proc/"$pid"/fd/*; do
+    case "$(readlink "$fd" 2>/dev/null)" in
+      *"/shot.plan.farm/shots/"*) s=$(stat -L -c %s "$fd" 2>/dev/null || echo 0); [ "$s" -gt "$best" ] && best=$s ;;
+    esac
+  done
+  echo "$best"
+}
 killer() {
-  local pidf="$tmp/shot.plan.farm/run/shot-1.pid" part="$tmp/shot.plan.farm/shots/shot-00001.spt.partial"
+  local pidf="$tmp/shot.plan.farm/run/shot-1.pid" part="$tmp/shot.plan.farm/shots/shot-00001.spt.partial" pid=""
   for _ in $(seq 1200); do
-    [ -s "$pidf" ] && [ -f "$part" ] && [ "$(stat -c %s "$part" 2>/dev/null || echo 0)" -gt 3000 ] && break
+    pid="$(cat "$pidf" 2>/dev/null || true)"
+    [ -n "$pid" ] && [ "$(written "$pid" "$part")" -gt 3000 ] && break
     sleep 0.05
   done
   [ -s "$pidf" ] || { echo "killer: shot 1 never started" > "$tmp/killer.txt"; return; }
-  local pid; pid="$(cat "$pidf" 2>/dev/null || true)"
+  pid="$(cat "$pidf" 2>/dev/null || true)"
   if [ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; then echo "killed $pid" > "$tmp/killer.txt"
   else echo "killer: shot 1 ended before it could be killed" > "$tmp/killer.txt"; fi
 }
