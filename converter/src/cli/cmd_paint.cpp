@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/paint_cartoon.hpp"
 #include "cli/paint_options.hpp"
 #include "cli/paint_progress.hpp"
 #include "io/image_io.hpp"
@@ -212,6 +213,7 @@ int paint_still(const PaintCommandOptions& o) {
 int cmd_paint(int argc, char** argv) {
     PaintCommandOptions o;
     if (int rc = parse_paint_options(argc, argv, o); rc >= 0) return rc;
+    if (o.style == "cartoon") return paint_cartoon(o);
     std::error_code ec;
     if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
         return paint_sequence(o);

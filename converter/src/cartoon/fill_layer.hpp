@@ -1,0 +1,36 @@
+// The fill layer of a cartoon painting: every flat region as a filled polygon, larger
+// outlines first, all on the supersampling grid that best reproduces the source's edges.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "cartoon/palette.hpp"
+#include "cartoon/trace.hpp"
+#include "spt/render.hpp"
+#include "spt/types.hpp"
+
+namespace spt::cartoon {
+
+struct FillOptions {
+    PaletteOptions palette;
+    TraceOptions trace;
+    int min_region_pixels = 3;          // smaller components join their neighbours
+    std::vector<uint8_t> grids{4, 8};   // supersampling grids tried; the least error wins
+    // Bound on the polygons' rendering work (SPEC.md 10), well inside the readers' 2^28.
+    uint64_t max_work = uint64_t(1) << 26;
+};
+
+struct FillLayer {
+    std::vector<Stroke> strokes;        // polygons, drawing order
+    uint8_t grid = 0;                   // the supersampling grid chosen
+    size_t colors = 0, regions = 0;
+};
+
+// Traces `rgb` (CV_8UC3 RGB). Regions of the background colour drawn first are left to the
+// canvas. `renderer` renders candidate grids to compare them with the source.
+FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& opts);
+
+}  // namespace spt::cartoon
