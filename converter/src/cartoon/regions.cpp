@@ -150,11 +150,15 @@ Regions find_regions(const cv::Mat& rgb, cv::Mat labels, const std::vector<cv::V
         Region& r = regs[size_t(c)];
         r.box = cv::Rect(x0[size_t(c)], y0[size_t(c)], x1[size_t(c)] - x0[size_t(c)] + 1, y1[size_t(c)] - y0[size_t(c)] + 1);
         r.color = fill_colour(colours[size_t(c)], palette[size_t(r.label)]);
-        // Filled area: the region's outer outlines drawn filled in its box.
-        cv::Mat mask(r.box.size(), CV_8U, cv::Scalar(0));
+        // Filled area: the region's outer outlines drawn filled in its box, after closing gaps
+        // of up to two pixels (tracing closes them too: a ring broken where its line thins
+        // must still be drawn before the fill inside it).
+        const int m = 3;
+        cv::Mat mask(r.box.height + 2 * m, r.box.width + 2 * m, CV_8U, cv::Scalar(0));
         for (int y = 0; y < r.box.height; ++y)
             for (int x = 0; x < r.box.width; ++x)
-                if (comp.at<int>(r.box.y + y, r.box.x + x) == c) mask.at<uint8_t>(y, x) = 255;
+                if (comp.at<int>(r.box.y + y, r.box.x + x) == c) mask.at<uint8_t>(y + m, x + m) = 255;
+        cv::morphologyEx(mask, mask, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
         std::vector<std::vector<cv::Point>> outlines;
         cv::findContours(mask, outlines, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
         cv::drawContours(mask, outlines, -1, cv::Scalar(255), cv::FILLED);

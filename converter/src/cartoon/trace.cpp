@@ -1,5 +1,7 @@
 #include "cartoon/trace.hpp"
 
+#include "cartoon/fit_outline.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -98,21 +100,64 @@ std::vector<PolygonStroke> trace_region(const cv::Mat& rgb, const Regions& regs,
             for (int j = 0; j < n; ++j) bin.at<uint8_t>(y * k + sub[size_t(j)].second / k, x * k + sub[size_t(j)].second % k) = 255;
         }
 
+    // Outlines with their holes. A hole over pixels of a region drawn earlier must stay open
+    // (a ring whose line breaks in the source traces closed, and its fill would cover what it
+    // encloses); holes over later regions only are filled, the later regions cover them.
     std::vector<std::vector<cv::Point>> outlines;
-    cv::findContours(bin, outlines, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
-    std::vector<PolygonStroke> out;
-    for (const auto& c : outlines) {
-        if (cv::contourArea(c) < opts.min_area * k * k) continue;
+    std::vector<cv::Vec4i> tree;
+    cv::findContours(bin, outlines, tree, cv::RETR_CCOMP, cv::CHAIN_APPROX_NONE);
+    const double unit = 16.0 / k, step = opts.lattice;
+    auto simplify = [&](const std::vector<cv::Point>& c) {
         std::vector<cv::Point> simple;
         cv::approxPolyDP(c, simple, opts.epsilon * k, true);
-        if (simple.size() < 3) continue;
+        if (simple.size() < 3) return std::vector<cv::Point2f>();
+        return opts.fit ? fit_outline(c, simple, bin) : std::vector<cv::Point2f>(simple.begin(), simple.end());
+    };
+    auto over_earlier = [&](const std::vector<cv::Point>& hole) {
+        const cv::Rect hb = cv::boundingRect(hole);
+        for (int y = hb.y / k; y <= (hb.y + hb.height) / k; ++y)
+            for (int x = hb.x / k; x <= (hb.x + hb.width) / k; ++x) {
+                const int ix = x - pad, iy = y - pad;  // box pixel
+                if (ix < 0 || iy < 0 || ix >= box.width || iy >= box.height || id.at<int>(iy, ix) >= index) continue;
+                if (cv::pointPolygonTest(hole, cv::Point2f(float(x * k) + 0.5f * float(k - 1), float(y * k) + 0.5f * float(k - 1)), false) > 0)
+                    return true;
+            }
+        return false;
+    };
+    std::vector<PolygonStroke> out;
+    for (size_t o = 0; o < outlines.size(); ++o) {
+        if (tree[o][3] >= 0) continue;  // a hole: handled with its outline
+        if (cv::contourArea(outlines[o]) < opts.min_area * k * k) continue;
+        std::vector<cv::Point2f> ring = simplify(outlines[o]);
+        if (ring.size() < 3) continue;
+        for (int h = tree[o][2]; h >= 0; h = tree[size_t(h)][0]) {
+            const auto& hole = outlines[size_t(h)];
+            if (cv::contourArea(hole) < opts.min_area * k * k || !over_earlier(hole)) continue;
+            const std::vector<cv::Point2f> hr = simplify(hole);
+            if (hr.size() < 3) continue;
+            // Joined by a bridge there and back: the two bridge edges cancel under the nonzero
+            // rule, and the hole's reversed direction winds to zero inside it.
+            size_t bi = 0, bj = 0;
+            float best = -1;
+            for (size_t a = 0; a < ring.size(); ++a)
+                for (size_t b = 0; b < hr.size(); ++b) {
+                    const cv::Point2f d = ring[a] - hr[b];
+                    const float dd = d.dot(d);
+                    if (best < 0 || dd < best) { best = dd; bi = a; bj = b; }
+                }
+            std::vector<cv::Point2f> joined(ring.begin(), ring.begin() + std::ptrdiff_t(bi) + 1);
+            for (size_t t = 0; t <= hr.size(); ++t) joined.push_back(hr[(bj + t) % hr.size()]);
+            joined.insert(joined.end(), ring.begin() + std::ptrdiff_t(bi), ring.end());
+            ring.swap(joined);
+        }
         PolygonStroke p;
         p.color = Rgba8{mine[0], mine[1], mine[2], 255};
-        // Upsampled pixel X has its centre at image position box.x - pad + (X + 0.5) / k.
-        for (const cv::Point& v : simple) {
+        // Upsampled pixel X has its centre at image position box.x - pad + (X + 0.5) / k;
+        // vertices are rounded to the lattice of `opts.lattice` Q4 units through it.
+        for (const cv::Point2f& v : ring) {
             PolygonVertex q;
-            q.x = int32_t(16 * (box.x - pad) + (32 * v.x + 16) / (2 * k));
-            q.y = int32_t(16 * (box.y - pad) + (32 * v.y + 16) / (2 * k));
+            q.x = int32_t(16 * (box.x - pad) + 8 / k + int32_t(std::lround(v.x * unit / step) * step));
+            q.y = int32_t(16 * (box.y - pad) + 8 / k + int32_t(std::lround(v.y * unit / step) * step));
             p.points.push_back(q);
         }
         out.push_back(std::move(p));

@@ -18,6 +18,8 @@ struct TraceOptions {
     double epsilon = 0.35;     // simplification tolerance, pixels
     int extend = 2;            // a region reaches this far under regions drawn after it
     double min_area = 1.0;     // outlines enclosing less than this (pixels) are dropped
+    bool fit = true;           // sides refitted to the contour (fit_outline.hpp)
+    int lattice = 2;           // vertices on a lattice of this many Q4 units (4: 1/4 pixel)
 };
 
 // The polygons (colour and vertices; supersample 0) of region `index` of `regs`.
