@@ -9,9 +9,11 @@
 
 namespace spt::cartoon {
 
-FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& opts) {
+FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& opts,
+                           const std::vector<cv::Vec3b>* given) {
     FillLayer out;
-    const std::vector<cv::Vec3b> palette = find_palette(rgb, opts.palette);
+    const std::vector<cv::Vec3b> palette = given ? *given : find_palette(rgb, opts.palette);
+    out.palette = palette;
     out.colors = palette.size();
     if (palette.empty()) return out;
     const Regions regs = find_regions(rgb, label_pixels(rgb, palette), palette, opts.min_region_pixels);

@@ -27,10 +27,14 @@ struct FillLayer {
     std::vector<Stroke> strokes;        // polygons, drawing order
     uint8_t grid = 0;                   // the supersampling grid chosen
     size_t colors = 0, regions = 0;
+    std::vector<cv::Vec3b> palette;     // the flat colours used
 };
 
 // Traces `rgb` (CV_8UC3 RGB). Regions of the background colour drawn first are left to the
-// canvas. `renderer` renders candidate grids to compare them with the source.
-FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& opts);
+// canvas. `renderer` renders candidate grids to compare them with the source. With `palette`
+// (a sequence's key frame palette) the colours are not searched again, so that what stays
+// still traces to the same polygons frame after frame.
+FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& opts,
+                           const std::vector<cv::Vec3b>* palette = nullptr);
 
 }  // namespace spt::cartoon

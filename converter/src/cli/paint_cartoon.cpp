@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cartoon/cartoon_paint.hpp"
+#include "cartoon/cartoon_sequence.hpp"
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
 #include "io/template_loader.hpp"
@@ -85,12 +86,48 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
     return 0;
 }
 
+int paint_cartoon_sequence(const PaintCommandOptions& o) {
+    if (!o.preview.empty()) return fail("--preview is for still images; render a sequence with 'spt render'");
+    cartoon::SequenceOptions s;
+    s.input = o.input;
+    s.output = o.output;
+    s.frames = o.frames;
+    s.fps = o.fps;
+    s.skip_bad_frames = o.skip_bad_frames;
+    s.keyframe_interval = o.keyframe_interval;
+    s.paint = o.paint;
+    s.sets = o.sets;
+    s.background = o.background;
+    s.stored = o.stored;
+    s.fill = fill_options(o);
+    if (!o.templates_dir.empty()) {
+        auto t = io::load_templates(o.templates_dir);
+        if (!t) return fail(t.error().message);
+        s.templates = std::move(t.value());
+    }
+    s.metadata = {{"software", std::string("spt ") + library_version()},
+                  {"source", std::filesystem::path(o.input).filename().string()},
+                  {"painter.seed", std::to_string(o.paint.seed)},
+                  {"painter.options", o.canonical()}};
+    cartoon::SequenceReport r;
+    if (Status st = cartoon::paint_sequence(s, r); !st) return fail(st.error().message);
+    if (o.progress != io::ProgressMode::None)
+        std::fprintf(stderr,
+                     "spt paint: %s: %llu frames (%llu key), polygons %llu added %llu kept, %llu stamps, %llu removed; "
+                     "PSNR mean %.2f dB min %.2f; %llu bytes, %.2f s (%.3f s a frame)\n",
+                     o.output.c_str(), (unsigned long long)r.frames, (unsigned long long)r.key_frames,
+                     (unsigned long long)r.polygons_added, (unsigned long long)r.polygons_kept,
+                     (unsigned long long)r.stamps_added, (unsigned long long)r.removed, r.mean_psnr, r.min_psnr,
+                     (unsigned long long)r.bytes, r.seconds, r.frames ? r.seconds / double(r.frames) : 0.0);
+    return 0;
+}
+
 }  // namespace
 
 int paint_cartoon(const PaintCommandOptions& o) {
     std::error_code ec;
     if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
-        return fail("--style cartoon: sequences and videos are not painted yet");
+        return paint_cartoon_sequence(o);
     if (o.target_bytes > 0) return fail("--style cartoon: --target-bytes is not supported yet; use --target-psnr");
     if (!o.side_by_side.empty()) return fail("--style cartoon: --side-by-side is not supported; use --preview");
     if (!o.rois.empty()) return fail("--style cartoon: regions of interest are not supported");
