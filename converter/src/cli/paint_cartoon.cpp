@@ -57,6 +57,13 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
     StreamInfo info;
     info.header = setup.header;
     info.templates = setup.templates;
+    if (st.stamps.strokes == 0) {
+        // Polygons only: the stamps' sets, orientations and templates (about 400 bytes, a
+        // third of a flat cartoon frame) are not needed to decode it.
+        info.templates.clear();
+        info.header.sets.resize(1);
+        info.header.orientations.resize(1);
+    }
     info.metadata = {{"software", std::string("spt ") + library_version()},
                      {"source", std::filesystem::path(o.input).filename().string()},
                      {"painter.seed", std::to_string(o.paint.seed)},
