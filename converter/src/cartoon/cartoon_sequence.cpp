@@ -17,13 +17,14 @@ namespace spt::cartoon {
 
 namespace {
 
-// Where the source moved since the previous frame (any channel by more than a few levels:
-// compressed video flickers a little where nothing moves).
+// Where the source moved since the previous frame (any channel by more than 24 levels:
+// compressed video flickers where nothing moves; 6 and 24 kept the same stamps on the
+// butterfly clip, whose stamps go because polygons under them are redrawn).
 cv::Mat changed_mask(const io::Image& cur, const io::Image& prev) {
     cv::Mat m(int(cur.height), int(cur.width), CV_8U, cv::Scalar(0));
     for (size_t i = 0; i < size_t(cur.width) * cur.height; ++i)
         for (int c = 0; c < 3; ++c)
-            if (std::abs(int(cur.rgb[3 * i + c]) - int(prev.rgb[3 * i + c])) > 6) {
+            if (std::abs(int(cur.rgb[3 * i + c]) - int(prev.rgb[3 * i + c])) > 24) {
                 m.data[i] = 255;
                 break;
             }
