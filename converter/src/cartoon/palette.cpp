@@ -145,7 +145,29 @@ cv::Mat label_pixels(const cv::Mat& rgb, const std::vector<cv::Vec3b>& palette) 
                 }
                 if (d < best_d) { best_d = d; best = int(k); }
             }
-            out[x] = best;
+            // A blend with a rarer colour (palette order is by frequency) belongs to it from a
+            // quarter coverage on: the ink of thin lines and small text is mostly blended, and
+            // tracing measures each pixel's true share anyway.
+            int rare = -1;
+            double rare_err = 400;  // squared distance from the blend line, at most 20 levels
+            for (size_t k = size_t(best) + 1; k < palette.size() && best_d > 900; ++k) {
+                double ab2 = 0, t = 0;
+                for (int c = 0; c < 3; ++c) {
+                    const double ab = double(palette[k][c]) - palette[size_t(best)][c];
+                    ab2 += ab * ab;
+                    t += (double(row[x][c]) - palette[size_t(best)][c]) * ab;
+                }
+                if (ab2 < 900) continue;
+                t /= ab2;
+                if (t < 0.25 || t > 1) continue;
+                double e2 = 0;
+                for (int c = 0; c < 3; ++c) {
+                    const double e = double(row[x][c]) - (palette[size_t(best)][c] + t * (double(palette[k][c]) - palette[size_t(best)][c]));
+                    e2 += e * e;
+                }
+                if (e2 < rare_err) { rare_err = e2; rare = int(k); }
+            }
+            out[x] = rare >= 0 ? rare : best;
         }
     }
     return labels;
