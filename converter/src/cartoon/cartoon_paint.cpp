@@ -27,22 +27,35 @@ CartoonStats paint_cartoon(const paint::ImageView& model, Canvas& canvas, const 
                            std::vector<Stroke>& out) {
     CartoonStats st;
     const cv::Mat rgb(int(model.height), int(model.width), CV_8UC3, const_cast<uint8_t*>(model.rgb));
-    FillLayer fill = build_fill_layer(rgb, setup.header.background, renderer, fo);
+    // With a target the fill layer alone can reach, the coarsest outline that reaches it
+    // (fewest vertices); otherwise the given tolerance, and stamps for the rest.
+    FillLayer fill;
+    double fill_psnr = 0;
+    std::vector<double> tolerances;
+    if (po.target_psnr > 0 && fo.search_tolerance) tolerances = {1.0, 0.7, 0.5};
+    tolerances.push_back(fo.trace.epsilon);
+    for (double eps : tolerances) {
+        FillOptions f = fo;
+        f.trace.epsilon = eps;
+        fill = build_fill_layer(rgb, setup.header.background, renderer, f);
+        canvas.fill(setup.header.background);
+        for (const Stroke& s : fill.strokes) (void)renderer.draw(canvas, s);
+        fill_psnr = paint::psnr(model, canvas.rgb.data());
+        if (po.target_psnr > 0 && fill_psnr >= po.target_psnr) break;
+    }
     st.colors = fill.colors;
     st.regions = fill.regions;
     st.polygons = fill.strokes.size();
     st.grid = fill.grid;
     for (const Stroke& s : fill.strokes) st.vertices += s.polygon.points.size();
-    canvas.fill(setup.header.background);
-    for (const Stroke& s : fill.strokes) (void)renderer.draw(canvas, s);
-    st.fill_psnr = paint::psnr(model, canvas.rgb.data());
+    st.fill_psnr = fill_psnr;
     out.insert(out.end(), std::make_move_iterator(fill.strokes.begin()), std::make_move_iterator(fill.strokes.end()));
     st.stamps.psnr = st.fill_psnr;
     if (po.target_psnr > 0 && st.fill_psnr >= po.target_psnr) {
         st.stamps.stop = paint::StopReason::TargetPsnr;
         return st;
     }
-    const std::vector<uint8_t> region = residual_region(model, canvas, 24, 2);
+    const std::vector<uint8_t> region = residual_region(model, canvas, 12, 2);
     if (region.empty()) return st;
     std::vector<Stroke> stamps;
     st.stamps = paint::paint(model, canvas, renderer, setup, po, stamps, &region);

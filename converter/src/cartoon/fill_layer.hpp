@@ -17,6 +17,8 @@ namespace spt::cartoon {
 struct FillOptions {
     PaletteOptions palette;
     TraceOptions trace;
+    // Still pictures with a PSNR target: try coarser outlines first (cartoon_paint.hpp).
+    bool search_tolerance = true;
     int min_region_pixels = 3;          // smaller components join their neighbours
     std::vector<uint8_t> grids{4, 8};   // supersampling grids tried; the least error wins
     // Bound on the polygons' rendering work (SPEC.md 10), well inside the readers' 2^28.

@@ -24,7 +24,10 @@ int fail(const std::string& msg) {
 
 cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
     cartoon::FillOptions f;
-    if (o.outline_tolerance > 0) f.trace.epsilon = o.outline_tolerance;
+    if (o.outline_tolerance > 0) {
+        f.trace.epsilon = o.outline_tolerance;
+        f.search_tolerance = false;
+    }
     return f;
 }
 
