@@ -22,27 +22,35 @@ std::vector<uint8_t> residual_region(const paint::ImageView& model, const Canvas
     return std::vector<uint8_t>(m.datastart, m.dataend);
 }
 
+FillLayer fill_for_target(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& fo,
+                          double target_psnr, const std::vector<cv::Vec3b>* palette, Canvas& canvas, double& psnr) {
+    // With a target the fill layer alone can reach, the coarsest outline that reaches it
+    // (fewest vertices); otherwise the given tolerance, and stamps for the rest.
+    const paint::ImageView model{uint32_t(rgb.cols), uint32_t(rgb.rows), rgb.data};
+    std::vector<double> tolerances;
+    if (target_psnr > 0 && fo.search_tolerance) tolerances = {1.0, 0.7, 0.5};
+    tolerances.push_back(fo.trace.epsilon);
+    FillLayer fill;
+    for (double eps : tolerances) {
+        FillOptions f = fo;
+        f.trace.epsilon = eps;
+        fill = build_fill_layer(rgb, background, renderer, f, palette);
+        fill.tolerance = eps;
+        canvas.fill(background);
+        for (const Stroke& s : fill.strokes) (void)renderer.draw(canvas, s);
+        psnr = paint::psnr(model, canvas.rgb.data());
+        if (target_psnr > 0 && psnr >= target_psnr) break;
+    }
+    return fill;
+}
+
 CartoonStats paint_cartoon(const paint::ImageView& model, Canvas& canvas, const Renderer& renderer,
                            const paint::PaintSetup& setup, const paint::PaintOptions& po, const FillOptions& fo,
                            std::vector<Stroke>& out) {
     CartoonStats st;
     const cv::Mat rgb(int(model.height), int(model.width), CV_8UC3, const_cast<uint8_t*>(model.rgb));
-    // With a target the fill layer alone can reach, the coarsest outline that reaches it
-    // (fewest vertices); otherwise the given tolerance, and stamps for the rest.
-    FillLayer fill;
     double fill_psnr = 0;
-    std::vector<double> tolerances;
-    if (po.target_psnr > 0 && fo.search_tolerance) tolerances = {1.0, 0.7, 0.5};
-    tolerances.push_back(fo.trace.epsilon);
-    for (double eps : tolerances) {
-        FillOptions f = fo;
-        f.trace.epsilon = eps;
-        fill = build_fill_layer(rgb, setup.header.background, renderer, f);
-        canvas.fill(setup.header.background);
-        for (const Stroke& s : fill.strokes) (void)renderer.draw(canvas, s);
-        fill_psnr = paint::psnr(model, canvas.rgb.data());
-        if (po.target_psnr > 0 && fill_psnr >= po.target_psnr) break;
-    }
+    FillLayer fill = fill_for_target(rgb, setup.header.background, renderer, fo, po.target_psnr, nullptr, canvas, fill_psnr);
     st.colors = fill.colors;
     st.regions = fill.regions;
     st.polygons = fill.strokes.size();

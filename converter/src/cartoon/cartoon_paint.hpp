@@ -28,6 +28,12 @@ CartoonStats paint_cartoon(const paint::ImageView& model, Canvas& canvas, const 
                            const paint::PaintSetup& setup, const paint::PaintOptions& po, const FillOptions& fo,
                            std::vector<Stroke>& out);
 
+// The fill layer of `rgb` drawn on `canvas` (cleared first), `psnr` its PSNR. With a target
+// and FillOptions::search_tolerance, the coarsest of 1.0, 0.7, 0.5 px outlines that reaches
+// the target, else the options' tolerance.
+FillLayer fill_for_target(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& fo,
+                          double target_psnr, const std::vector<cv::Vec3b>* palette, Canvas& canvas, double& psnr);
+
 // Where the residual painter may paint: pixels whose error (sum over channels) exceeds
 // `threshold`, widened by `grow` pixels. Empty when no pixel does.
 std::vector<uint8_t> residual_region(const paint::ImageView& model, const Canvas& canvas, int threshold, int grow);

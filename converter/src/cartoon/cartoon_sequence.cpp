@@ -79,10 +79,18 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
         const cv::Mat rgb(int(H), int(W), CV_8UC3, const_cast<uint8_t*>(img.rgb.data()));
         const paint::ImageView model{W, H, img.rgb.data()};
         const bool key = index == 0 || since_key >= uint32_t(opts.keyframe_interval);
-        FillLayer fill = build_fill_layer(rgb, opts.background, **renderer, fo, key ? nullptr : &palette);
+        // Key frames choose the palette, grid and outline tolerance for their interval, so that
+        // what stays still traces the same in the frames after.
+        FillLayer fill;
         if (key) {
+            fo = opts.fill;
+            double p = 0;
+            fill = fill_for_target(rgb, opts.background, **renderer, fo, opts.paint.target_psnr, nullptr, canvas, p);
             palette = fill.palette;
-            fo.grids = {fill.grid ? fill.grid : uint8_t(4)};  // one grid for the whole key interval
+            fo.grids = {fill.grid ? fill.grid : uint8_t(4)};
+            fo.trace.epsilon = fill.tolerance;
+        } else {
+            fill = build_fill_layer(rgb, opts.background, **renderer, fo, &palette);
         }
         Frame f;
         f.index = index;

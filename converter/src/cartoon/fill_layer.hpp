@@ -30,6 +30,7 @@ struct FillLayer {
     uint8_t grid = 0;                   // the supersampling grid chosen
     size_t colors = 0, regions = 0;
     std::vector<cv::Vec3b> palette;     // the flat colours used
+    double tolerance = 0;               // the outline tolerance (fill_for_target)
 };
 
 // Traces `rgb` (CV_8UC3 RGB). Regions of the background colour drawn first are left to the
