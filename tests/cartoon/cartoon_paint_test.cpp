@@ -144,3 +144,23 @@ TEST(CartoonCli, StarFrameReaches36dBInFewBytes) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CartoonCli, TargetBytesLandsAtOrBelowTheBudget) {
+    TempDir dir;
+    const cv::Mat img = flat_art();
+    ASSERT_TRUE(spt::io::write_image(dir.file("art.png"), uint32_t(img.cols), uint32_t(img.rows), img.data));
+    for (uint64_t budget : {900u, 2500u}) {
+        const std::string out = dir.file("art" + std::to_string(budget) + ".spt");
+        const auto r = run_spt(dir, {"paint", dir.file("art.png"), "-o", out, "--style", "cartoon", "--target-bytes",
+                                     std::to_string(budget), "--progress", "none"});
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_LE(fs::file_size(out), budget);
+        EXPECT_GE(fs::file_size(out), budget * 6 / 10) << "far below the budget: the search did not run";
+        EXPECT_FALSE(fs::exists(out + ".rate-search"));
+        EXPECT_EQ(run_spt(dir, {"verify", out}).code, 0);
+    }
+}
+
+}  // namespace

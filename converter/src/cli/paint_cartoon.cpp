@@ -31,6 +31,46 @@ cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
     return f;
 }
 
+// Paints `model` with `po` and writes it to `path`; returns the file's bytes.
+Result<uint64_t> paint_write(const PaintCommandOptions& o, const paint::ImageView& model, const paint::PaintSetup& setup,
+                             const Renderer& renderer, const paint::PaintOptions& po, const std::string& path,
+                             Canvas& canvas, cartoon::CartoonStats& st) {
+    std::vector<Stroke> strokes;
+    st = cartoon::paint_cartoon(model, canvas, renderer, setup, po, fill_options(o), strokes);
+    StreamInfo info;
+    info.header = setup.header;
+    info.templates = setup.templates;
+    if (st.stamps.strokes == 0) {
+        // Polygons only: the stamps' sets, orientations and templates (about 400 bytes, a
+        // third of a flat cartoon frame) are not needed to decode it.
+        info.templates.clear();
+        info.header.sets.resize(1);
+        info.header.orientations.resize(1);
+    }
+    PaintCommandOptions meta = o;
+    meta.paint.target_psnr = po.target_psnr;
+    info.metadata = {{"software", std::string("spt ") + library_version()},
+                     {"source", std::filesystem::path(o.input).filename().string()},
+                     {"painter.seed", std::to_string(o.paint.seed)},
+                     {"painter.options", meta.canonical()}};
+    WriterOptions wo;
+    // Frames holding polygons are range coded (coding 2 replays stamps only, SPEC.md 7.7).
+    wo.coding = o.stored ? Coding::Stored : Coding::Range;
+    auto writer = Writer::create(path, info, wo);
+    if (!writer) return writer.error();
+    Frame frame;
+    frame.added = std::move(strokes);
+    Status s = (*writer)->append(frame);
+    if (s) s = (*writer)->finish();
+    if (!s) {
+        (*writer)->abort();
+        Error e = s.error();
+        e.message = path + ": " + e.message;
+        return e;
+    }
+    return (*writer)->stats().total_bytes;
+}
+
 int paint_cartoon_still(const PaintCommandOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     io::ReadOptions ro;
@@ -51,42 +91,33 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
     auto renderer = Renderer::create(setup.header, setup.templates);
     if (!renderer) return fail("cannot set up the renderer: " + renderer.error().message);
 
-    Canvas canvas(W, H, o.background);
-    std::vector<Stroke> strokes;
     const paint::ImageView model{W, H, img->rgb.data()};
-    const cartoon::CartoonStats st = cartoon::paint_cartoon(model, canvas, **renderer, setup, o.paint, fill_options(o), strokes);
+    Canvas canvas(W, H, o.background);
+    cartoon::CartoonStats st;
+    paint::PaintOptions po = o.paint;
+    if (o.target_bytes > 0) {
+        // --target-bytes: bisection on the PSNR target, each trial a full painting coded to a
+        // scratch file beside the output (the fill layer's tolerance follows the target).
+        const std::string scratch = o.output + ".rate-search";
+        double lo = 15, hi = 60, best = 0;
+        for (int i = 0; i < 8; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            po.target_psnr = mid;
+            auto b = paint_write(o, model, setup, **renderer, po, scratch, canvas, st);
+            std::filesystem::remove(scratch);
+            if (!b) return fail(b.error().message);
+            if (*b <= o.target_bytes) { best = mid; lo = mid; } else { hi = mid; }
+        }
+        po.target_psnr = best > 0 ? best : lo;
+        std::fprintf(stderr, "spt paint: --target-bytes %llu: --target-psnr %.2f\n",
+                     (unsigned long long)o.target_bytes, po.target_psnr);
+    }
+    auto written = paint_write(o, model, setup, **renderer, po, o.output, canvas, st);
+    if (!written) return fail(written.error().message);
+    const uint64_t bytes = *written;
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-    StreamInfo info;
-    info.header = setup.header;
-    info.templates = setup.templates;
-    if (st.stamps.strokes == 0) {
-        // Polygons only: the stamps' sets, orientations and templates (about 400 bytes, a
-        // third of a flat cartoon frame) are not needed to decode it.
-        info.templates.clear();
-        info.header.sets.resize(1);
-        info.header.orientations.resize(1);
-    }
-    info.metadata = {{"software", std::string("spt ") + library_version()},
-                     {"source", std::filesystem::path(o.input).filename().string()},
-                     {"painter.seed", std::to_string(o.paint.seed)},
-                     {"painter.options", o.canonical()}};
-    WriterOptions wo;
-    // Frames holding polygons are range coded (coding 2 replays stamps only, SPEC.md 7.7).
-    wo.coding = o.stored ? Coding::Stored : Coding::Range;
-    auto writer = Writer::create(o.output, info, wo);
-    if (!writer) return fail(writer.error().message);
-    Frame frame;
-    frame.added = std::move(strokes);
-    Status s = (*writer)->append(frame);
-    if (s) s = (*writer)->finish();
-    if (!s) {
-        (*writer)->abort();
-        return fail(o.output + ": " + s.error().message);
-    }
     if (!o.preview.empty())
         if (Status p = io::write_image(o.preview, canvas); !p) return fail(p.error().message);
-    const uint64_t bytes = (*writer)->stats().total_bytes;
     if (o.progress != io::ProgressMode::None)
         std::fprintf(stderr,
                      "spt paint: %s: %zu colours, %zu regions, %zu polygons (%zu vertices, grid %d) %.2f dB; "
@@ -97,6 +128,7 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
 }
 
 int paint_cartoon_sequence(const PaintCommandOptions& o) {
+    if (o.target_bytes > 0) return fail("--style cartoon: --target-bytes is for still images only yet; use --target-psnr");
     if (!o.preview.empty()) return fail("--preview is for still images; render a sequence with 'spt render'");
     cartoon::SequenceOptions s;
     s.input = o.input;
@@ -138,7 +170,6 @@ int paint_cartoon(const PaintCommandOptions& o) {
     std::error_code ec;
     if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
         return paint_cartoon_sequence(o);
-    if (o.target_bytes > 0) return fail("--style cartoon: --target-bytes is not supported yet; use --target-psnr");
     if (!o.side_by_side.empty()) return fail("--style cartoon: --side-by-side is not supported; use --preview");
     if (!o.rois.empty()) return fail("--style cartoon: regions of interest are not supported");
     return paint_cartoon_still(o);
