@@ -1,6 +1,7 @@
 #include "cartoon/frame_diff.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 
 namespace spt::cartoon {
@@ -38,6 +39,28 @@ std::vector<int32_t> key_of(const PolygonStroke& p) {
     return k;
 }
 
+// Two polygons cover nearly the same pixels: their coverage differs by at most two pixels'
+// worth, or 1/500 of their area.
+bool same_coverage(const Stroke& a, const Stroke& b, const Renderer& renderer) {
+    Mask ma, mb;
+    if (!renderer.stroke_mask(a, ma) || !renderer.stroke_mask(b, mb)) return false;
+    int64_t diff = 0, area = 0;
+    const int32_t x0 = std::min(ma.x0, mb.x0), y0 = std::min(ma.y0, mb.y0);
+    const int32_t x1 = std::max(ma.x0 + int32_t(ma.w), mb.x0 + int32_t(mb.w));
+    const int32_t y1 = std::max(ma.y0 + int32_t(ma.h), mb.y0 + int32_t(mb.h));
+    auto at = [](const Mask& m, int32_t x, int32_t y) -> int {
+        if (x < m.x0 || y < m.y0 || x >= m.x0 + int32_t(m.w) || y >= m.y0 + int32_t(m.h)) return 0;
+        return m.a[size_t(y - m.y0) * m.w + size_t(x - m.x0)];
+    };
+    for (int32_t y = y0; y < y1; ++y)
+        for (int32_t x = x0; x < x1; ++x) {
+            const int va = at(ma, x, y), vb = at(mb, x, y);
+            diff += std::abs(va - vb);
+            area += va;
+        }
+    return diff <= std::max<int64_t>(2 * 255, area / 500);
+}
+
 }  // namespace
 
 FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stroke>& polygons, const cv::Mat& changed,
@@ -62,6 +85,26 @@ FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stro
                     break;
                 }
         }
+        // Not traced identically (compressed video: noise moves an outline's vertices), but an
+        // old polygon of nearly the same colour, box and coverage stands for it: what stays
+        // still is not coded again, and the stamps correct the rest.
+        if (!kept && !overlaps_any(box, d.added_boxes))
+            for (uint32_t i = uint32_t(last + 1); i < old_live.size(); ++i) {
+                const Stroke& o = old_live[i];
+                if (o.kind != StrokeKind::Polygon || keep[i]) continue;
+                const Rgba8& a = o.polygon.color;
+                const Rgba8& b = s.polygon.color;
+                if (std::abs(a.r - b.r) > 4 || std::abs(a.g - b.g) > 4 || std::abs(a.b - b.b) > 4) continue;
+                const cv::Rect ob = stroke_box(o, renderer, W, H);
+                if (std::abs(ob.x - box.x) > 1 || std::abs(ob.y - box.y) > 1 || std::abs(ob.br().x - box.br().x) > 1 ||
+                    std::abs(ob.br().y - box.br().y) > 1)
+                    continue;
+                if (!same_coverage(o, s, renderer)) continue;
+                keep[i] = 1;
+                last = i;
+                kept = true;
+                break;
+            }
         if (!kept) {
             d.added.push_back(s);
             d.added_boxes.push_back(box);
