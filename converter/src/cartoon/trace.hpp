@@ -14,7 +14,7 @@
 namespace spt::cartoon {
 
 struct TraceOptions {
-    int upsample = 4;          // sub-pixel resolution of the outline (1/upsample pixel)
+    int upsample = 8;          // sub-pixel resolution of the outline (1/upsample pixel)
     double epsilon = 0.35;     // simplification tolerance, pixels
     int extend = 2;            // a region reaches this far under regions drawn after it
     double min_area = 1.0;     // outlines enclosing less than this (pixels) are dropped
