@@ -142,6 +142,9 @@ int paint_cartoon_sequence(const PaintCommandOptions& o) {
     s.background = o.background;
     s.stored = o.stored;
     s.fill = fill_options(o);
+    // Sequences trace on 4x4 sub-pixels: with 8x8 the butterfly clip (frames 0-23, 36 dB)
+    // took 580 KB instead of 469 KB (fewer still outlines matched frame to frame).
+    s.fill.trace.upsample = 4;
     if (!o.templates_dir.empty()) {
         auto t = io::load_templates(o.templates_dir);
         if (!t) return fail(t.error().message);
