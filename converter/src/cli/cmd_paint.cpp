@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/paint_cartoon.hpp"
 #include "cli/paint_options.hpp"
 #include "cli/paint_plan.hpp"
 #include "cli/paint_progress.hpp"
@@ -232,6 +233,7 @@ int cmd_paint(int argc, char** argv) {
         if (std::string(argv[i]) == "--plan" || std::string(argv[i]).rfind("--plan=", 0) == 0) return paint_plan(argc, argv);
     PaintCommandOptions o;
     if (int rc = parse_paint_options(argc, argv, o); rc >= 0) return rc;
+    if (o.style == "cartoon") return paint_cartoon(o);
     std::error_code ec;
     if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
         return paint_sequence(o);

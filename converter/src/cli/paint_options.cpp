@@ -102,6 +102,9 @@ void declare(Args& a) {
     a.positional("IN", "an image, an image sequence (shot.####.exr, shot.%04d.png, shot.1-120#.png), a folder "
                        "of frames, or a video file")
         .option("output", "FILE", "the .spt file to write (required)", 'o')
+        .option("style", "NAME", "painterly: stamps everywhere (the paper's painter); cartoon: flat-colour "
+                                 "regions as anti-aliased filled polygons, stamps only where they leave an error",
+                0, "painterly")
         .option("seed", "N", "random seed; the same seed and options give the same bytes whatever --threads", 0, "1")
         .option("sets", "N", "number of stroke sets, 3..10, large to small, sized from the canvas", 0, "6")
         .option("set-sizes", "WxH,...", "explicit set sizes in pixels, coarse to fine (overrides --sets)")
@@ -136,6 +139,8 @@ void declare(Args& a) {
                                    "fewer bits on them")
         .option("target-bytes", "N[/s]", "search lambda so that the file is at most N bytes (N/s: per second of a "
                                          "clip); reports where it landed")
+        .option("outline-tolerance", "PX", "--style cartoon: how far (pixels) a polygon's outline may leave "
+                                           "the traced edge (default 0.35)")
         .group("sequences and video")
         .option("frames", "A-B", "paint only these frames (sequence numbers, or 0-based video frames)")
         .option("fps", "R", "frame rate, e.g. 24 or 30000/1001 (default: the video's, or 24)")
@@ -188,6 +193,13 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
     auto v = [&](const char* name) { return a.get(name); };
     o.input = a.pos("IN");
     o.output = a.get("output");
+    if (a.has("style")) {
+        o.style = v("style");
+        if (o.style != "painterly" && o.style != "cartoon")
+            return bad("--style: expected painterly or cartoon, got '" + o.style + "'");
+    }
+    if (a.has("outline-tolerance") && !parse_double(v("outline-tolerance"), 0.01, 100, o.outline_tolerance))
+        return bad("--outline-tolerance: expected 0.01..100 pixels, got '" + v("outline-tolerance") + "'");
     long n = 0;
     if (a.has("seed") && !parse_u64(v("seed"), o.paint.seed))
         return bad("--seed: expected an unsigned integer, got '" + v("seed") + "'");
@@ -300,6 +312,7 @@ std::string PaintCommandOptions::canonical() const {
       << " orient=" << orient_name(paint.orient) << " templates=" << (templates_dir.empty() ? "builtin" : "custom")
       << " background=" << int(background.r) << ',' << int(background.g) << ',' << int(background.b)
       << " rois=" << rois.size();
+    if (style != "painterly") s << " style=" << style << " outline-tolerance=" << outline_tolerance;  // painterly files keep their bytes
     return s.str();
 }
 

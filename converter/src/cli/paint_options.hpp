@@ -23,6 +23,8 @@ struct RoiSpec {
 struct PaintCommandOptions {
     std::string input;
     std::string output;
+    std::string style = "painterly";      // --style painterly|cartoon
+    double outline_tolerance = 0;         // --outline-tolerance PX (cartoon): 0 = the default
     paint::PaintOptions paint;            // seed, threads, limits, threshold, orient, lambda, ...
     int sets = 6;                         // --sets, when --set-sizes is not given
     std::vector<StrokeSet> set_sizes;     // --set-sizes WxH,WxH,... (coarse to fine)

@@ -1,0 +1,41 @@
+// `spt paint --style cartoon` for one picture: the fill layer (flat regions as anti-aliased
+// polygons, fill_layer.hpp), then the stamp painter on what the polygons left wrong
+// (gradients, texture), painting only where the error is.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cartoon/fill_layer.hpp"
+#include "paint/painter.hpp"
+#include "spt/render.hpp"
+#include "spt/types.hpp"
+
+namespace spt::cartoon {
+
+struct CartoonStats {
+    size_t colors = 0, regions = 0, polygons = 0, vertices = 0;
+    uint8_t grid = 0;
+    double fill_psnr = 0;        // after the polygons
+    paint::PaintStats stamps;    // the residual painting (stamps.psnr: the final PSNR)
+};
+
+// Paints `model` onto `canvas` (the background): appends the polygons then the stamps to
+// `out` and draws them, exactly as `renderer` renders them. `po` drives the residual stamp
+// painter (its target PSNR, lambda, seed, threads); with a target the fill layer already
+// reaches, no stamp is painted.
+CartoonStats paint_cartoon(const paint::ImageView& model, Canvas& canvas, const Renderer& renderer,
+                           const paint::PaintSetup& setup, const paint::PaintOptions& po, const FillOptions& fo,
+                           std::vector<Stroke>& out);
+
+// The fill layer of `rgb` drawn on `canvas` (cleared first), `psnr` its PSNR. With a target
+// and FillOptions::search_tolerance, the coarsest of 1.0, 0.7, 0.5 px outlines that reaches
+// the target, else the options' tolerance.
+FillLayer fill_for_target(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& fo,
+                          double target_psnr, const std::vector<cv::Vec3b>* palette, Canvas& canvas, double& psnr);
+
+// Where the residual painter may paint: pixels whose error (sum over channels) exceeds
+// `threshold`, widened by `grow` pixels. Empty when no pixel does.
+std::vector<uint8_t> residual_region(const paint::ImageView& model, const Canvas& canvas, int threshold, int grow);
+
+}  // namespace spt::cartoon

@@ -1,0 +1,39 @@
+// `spt paint --style cartoon` for image sequences and videos. Each frame is traced to polygons
+// with the key frame's palette; an inter frame keeps every polygon that traced the same and
+// every stamp whose ground did not change (frame_diff.hpp), removes the rest, adds the new
+// polygons and paints stamps where the error is. No motion field yet: what moves is redrawn.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cartoon/fill_layer.hpp"
+#include "paint/painter.hpp"
+#include "spt/result.hpp"
+#include "spt/types.hpp"
+
+namespace spt::cartoon {
+
+struct SequenceOptions {
+    std::string input, output, frames, fps;
+    bool skip_bad_frames = false;
+    int keyframe_interval = 100;
+    paint::PaintOptions paint;          // the residual stamps: target PSNR, lambda, seed, threads
+    int sets = 6;
+    std::vector<Template> templates;    // empty: the built-in set
+    Rgb8 background{255, 255, 255};
+    bool stored = false;
+    FillOptions fill;
+    std::vector<std::pair<std::string, std::string>> metadata;
+};
+
+struct SequenceReport {
+    uint64_t frames = 0, key_frames = 0, bytes = 0;
+    uint64_t polygons_added = 0, polygons_kept = 0, stamps_added = 0, removed = 0;
+    double mean_psnr = 0, min_psnr = 99, seconds = 0;
+};
+
+Status paint_sequence(const SequenceOptions& opts, SequenceReport& report);
+
+}  // namespace spt::cartoon

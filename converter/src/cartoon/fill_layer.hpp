@@ -1,0 +1,43 @@
+// The fill layer of a cartoon painting: every flat region as a filled polygon, larger
+// outlines first, all on the supersampling grid that best reproduces the source's edges.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "cartoon/palette.hpp"
+#include "cartoon/trace.hpp"
+#include "spt/render.hpp"
+#include "spt/types.hpp"
+
+namespace spt::cartoon {
+
+struct FillOptions {
+    PaletteOptions palette;
+    TraceOptions trace;
+    // Still pictures with a PSNR target: try coarser outlines first (cartoon_paint.hpp).
+    bool search_tolerance = true;
+    int min_region_pixels = 3;          // smaller components join their neighbours
+    std::vector<uint8_t> grids{4, 8};   // supersampling grids tried; the least error wins
+    // Bound on the polygons' rendering work (SPEC.md 10), well inside the readers' 2^28.
+    uint64_t max_work = uint64_t(1) << 26;
+};
+
+struct FillLayer {
+    std::vector<Stroke> strokes;        // polygons, drawing order
+    uint8_t grid = 0;                   // the supersampling grid chosen
+    size_t colors = 0, regions = 0;
+    std::vector<cv::Vec3b> palette;     // the flat colours used
+    double tolerance = 0;               // the outline tolerance (fill_for_target)
+};
+
+// Traces `rgb` (CV_8UC3 RGB). Regions of the background colour drawn first are left to the
+// canvas. `renderer` renders candidate grids to compare them with the source. With `palette`
+// (a sequence's key frame palette) the colours are not searched again, so that what stays
+// still traces to the same polygons frame after frame.
+FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& opts,
+                           const std::vector<cv::Vec3b>* palette = nullptr);
+
+}  // namespace spt::cartoon

@@ -1,0 +1,30 @@
+// Connected regions of one flat colour, ordered so that drawing each one's outer outline
+// filled, first to last, rebuilds the picture: a region drawn later lies inside the filled
+// outline of every region it is nested in, so holes need no outlines of their own.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace spt::cartoon {
+
+struct Region {
+    int label = 0;             // palette index
+    cv::Vec3b color;           // mean of the region's pixels away from its edge
+    int64_t pixels = 0;
+    int64_t filled_area = 0;   // pixels inside its outer outline (holes included)
+    cv::Rect box;
+};
+
+struct Regions {
+    cv::Mat id;                 // CV_32S: per pixel, the index into `list` (drawing order)
+    std::vector<Region> list;   // drawing order: larger filled outlines first
+};
+
+// Merges components smaller than `min_pixels` into their neighbours (by nearest colour), then
+// splits the labels into 8-connected regions and orders them.
+Regions find_regions(const cv::Mat& rgb, cv::Mat labels, const std::vector<cv::Vec3b>& palette, int min_pixels);
+
+}  // namespace spt::cartoon

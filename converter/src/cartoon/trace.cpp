@@ -1,0 +1,168 @@
+#include "cartoon/trace.hpp"
+
+#include "cartoon/fit_outline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+namespace spt::cartoon {
+
+namespace {
+
+// Coverage of colour `a` in a pixel `p` blended from `a` and `b`: the projection of p - b on
+// a - b, clamped to 0..1; -1 when the two colours are too close to tell.
+float blend_share(const cv::Vec3b& p, const cv::Vec3b& a, const cv::Vec3b& b) {
+    double num = 0, den = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double ab = double(a[c]) - double(b[c]);
+        num += (double(p[c]) - double(b[c])) * ab;
+        den += ab * ab;
+    }
+    if (den < 300) return -1.f;
+    return float(std::clamp(num / den, 0.0, 1.0));
+}
+
+}  // namespace
+
+std::vector<PolygonStroke> trace_region(const cv::Mat& rgb, const Regions& regs, int index, const TraceOptions& opts) {
+    const Region& reg = regs.list[size_t(index)];
+    const int margin = opts.extend + 2;
+    const cv::Rect img(0, 0, rgb.cols, rgb.rows);
+    const cv::Rect box = cv::Rect(reg.box.x - margin, reg.box.y - margin, reg.box.width + 2 * margin,
+                                  reg.box.height + 2 * margin) & img;
+    const cv::Mat id = regs.id(box);
+
+    // Distance (pixels) to the region, to reach under the regions drawn after it.
+    cv::Mat outside(box.size(), CV_8U);
+    for (int y = 0; y < box.height; ++y)
+        for (int x = 0; x < box.width; ++x) outside.at<uint8_t>(y, x) = id.at<int>(y, x) == index ? 0 : 255;
+    cv::Mat dist;
+    cv::distanceTransform(outside, dist, cv::DIST_L2, 3);
+
+    cv::Mat field(box.size(), CV_32F, cv::Scalar(0));
+    for (int y = 0; y < box.height; ++y)
+        for (int x = 0; x < box.width; ++x) {
+            const int r = id.at<int>(y, x);
+            if (r == index || (r > index && dist.at<float>(y, x) <= float(opts.extend))) field.at<float>(y, x) = 1.f;
+        }
+    // Edges against what stays visible (earlier regions, or later ones beyond the reach):
+    // the source's blend says how much of the pixel the region covers.
+    cv::Mat share = field.clone();
+    const cv::Vec3b mine = reg.color;
+    for (int y = 0; y < box.height; ++y)
+        for (int x = 0; x < box.width; ++x) {
+            const bool in = field.at<float>(y, x) > 0.5f;
+            const int r = id.at<int>(y, x);
+            if (!in) {
+                // Within two pixels: a thin line's faint pixels (a quarter covered) lie
+                // beside pixels that are no more than half covered either.
+                const bool next_to_region = dist.at<float>(y, x) <= 2.f;
+                if (!next_to_region) continue;
+                const float a = blend_share(rgb.at<cv::Vec3b>(box.y + y, box.x + x), mine, regs.list[size_t(r)].color);
+                if (a >= 0) share.at<float>(y, x) = a;
+            } else if (r == index) {
+                // The neighbour this pixel blends with: the first visible one around it.
+                int other = -1;
+                for (int dy = -1; dy <= 1 && other < 0; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int qx = x + dx, qy = y + dy;
+                        if (qx >= 0 && qy >= 0 && qx < box.width && qy < box.height && field.at<float>(qy, qx) < 0.5f) {
+                            other = id.at<int>(qy, qx);
+                            break;
+                        }
+                    }
+                if (other < 0) continue;
+                const float a = blend_share(rgb.at<cv::Vec3b>(box.y + y, box.x + x), mine, regs.list[size_t(other)].color);
+                if (a >= 0) share.at<float>(y, x) = a;
+            }
+        }
+
+    // Two pixels of replicated border: a region at the image's edge runs out past it.
+    const int pad = 2;
+    cv::Mat padded;
+    cv::copyMakeBorder(share, padded, pad, pad, pad, pad, cv::BORDER_REPLICATE);
+    const int k = std::max(1, opts.upsample);
+    cv::Mat up;
+    cv::resize(padded, up, cv::Size(padded.cols * k, padded.rows * k), 0, 0, cv::INTER_LINEAR);
+    // Each pixel gets exactly its share of the k x k sub-pixels: the ones where the smooth
+    // field is highest. Thresholding the field at one half would lose lines thinner than a
+    // pixel (two neighbours at half coverage); counting keeps their width and position.
+    cv::Mat bin(up.size(), CV_8U, cv::Scalar(0));
+    std::vector<std::pair<float, int>> sub(size_t(k * k));
+    for (int y = 0; y < padded.rows; ++y)
+        for (int x = 0; x < padded.cols; ++x) {
+            const int n = int(std::lround(double(padded.at<float>(y, x)) * k * k));
+            if (n <= 0) continue;
+            for (int j = 0; j < k * k; ++j) sub[size_t(j)] = {-up.at<float>(y * k + j / k, x * k + j % k), j};
+            if (n < k * k) std::sort(sub.begin(), sub.end());
+            for (int j = 0; j < n; ++j) bin.at<uint8_t>(y * k + sub[size_t(j)].second / k, x * k + sub[size_t(j)].second % k) = 255;
+        }
+
+    // Outlines with their holes. A hole over pixels of a region drawn earlier must stay open
+    // (a ring whose line breaks in the source traces closed, and its fill would cover what it
+    // encloses); holes over later regions only are filled, the later regions cover them.
+    std::vector<std::vector<cv::Point>> outlines;
+    std::vector<cv::Vec4i> tree;
+    cv::findContours(bin, outlines, tree, cv::RETR_CCOMP, cv::CHAIN_APPROX_NONE);
+    const double unit = 16.0 / k, step = opts.lattice;
+    auto simplify = [&](const std::vector<cv::Point>& c) {
+        std::vector<cv::Point> simple;
+        cv::approxPolyDP(c, simple, opts.epsilon * k, true);
+        if (simple.size() < 3) return std::vector<cv::Point2f>();
+        return opts.fit ? fit_outline(c, simple, bin) : std::vector<cv::Point2f>(simple.begin(), simple.end());
+    };
+    auto over_earlier = [&](const std::vector<cv::Point>& hole) {
+        const cv::Rect hb = cv::boundingRect(hole);
+        for (int y = hb.y / k; y <= (hb.y + hb.height) / k; ++y)
+            for (int x = hb.x / k; x <= (hb.x + hb.width) / k; ++x) {
+                const int ix = x - pad, iy = y - pad;  // box pixel
+                if (ix < 0 || iy < 0 || ix >= box.width || iy >= box.height || id.at<int>(iy, ix) >= index) continue;
+                if (cv::pointPolygonTest(hole, cv::Point2f(float(x * k) + 0.5f * float(k - 1), float(y * k) + 0.5f * float(k - 1)), false) > 0)
+                    return true;
+            }
+        return false;
+    };
+    std::vector<PolygonStroke> out;
+    for (size_t o = 0; o < outlines.size(); ++o) {
+        if (tree[o][3] >= 0) continue;  // a hole: handled with its outline
+        if (cv::contourArea(outlines[o]) < opts.min_area * k * k) continue;
+        std::vector<cv::Point2f> ring = simplify(outlines[o]);
+        if (ring.size() < 3) continue;
+        for (int h = tree[o][2]; h >= 0; h = tree[size_t(h)][0]) {
+            const auto& hole = outlines[size_t(h)];
+            if (cv::contourArea(hole) < opts.min_area * k * k || !over_earlier(hole)) continue;
+            const std::vector<cv::Point2f> hr = simplify(hole);
+            if (hr.size() < 3) continue;
+            // Joined by a bridge there and back: the two bridge edges cancel under the nonzero
+            // rule, and the hole's reversed direction winds to zero inside it.
+            size_t bi = 0, bj = 0;
+            float best = -1;
+            for (size_t a = 0; a < ring.size(); ++a)
+                for (size_t b = 0; b < hr.size(); ++b) {
+                    const cv::Point2f d = ring[a] - hr[b];
+                    const float dd = d.dot(d);
+                    if (best < 0 || dd < best) { best = dd; bi = a; bj = b; }
+                }
+            std::vector<cv::Point2f> joined(ring.begin(), ring.begin() + std::ptrdiff_t(bi) + 1);
+            for (size_t t = 0; t <= hr.size(); ++t) joined.push_back(hr[(bj + t) % hr.size()]);
+            joined.insert(joined.end(), ring.begin() + std::ptrdiff_t(bi), ring.end());
+            ring.swap(joined);
+        }
+        PolygonStroke p;
+        p.color = Rgba8{mine[0], mine[1], mine[2], 255};
+        // Upsampled pixel X has its centre at image position box.x - pad + (X + 0.5) / k;
+        // vertices are rounded to the lattice of `opts.lattice` Q4 units through it.
+        for (const cv::Point2f& v : ring) {
+            PolygonVertex q;
+            q.x = int32_t(16 * (box.x - pad) + 8 / k + int32_t(std::lround(v.x * unit / step) * step));
+            q.y = int32_t(16 * (box.y - pad) + 8 / k + int32_t(std::lround(v.y * unit / step) * step));
+            p.points.push_back(q);
+        }
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
+}  // namespace spt::cartoon

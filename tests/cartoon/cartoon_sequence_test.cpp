@@ -1,0 +1,76 @@
+// --style cartoon on a sequence: what stays still is kept from frame to frame (removals and
+// additions only where the picture changed), every frame renders close to its source, and
+// the file verifies.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "converter/cli_test_util.hpp"
+#include "io/image_io.hpp"
+#include "spt/spt.hpp"
+
+namespace {
+
+using spt_test::run_spt;
+using spt_test::TempDir;
+
+// A still red disc with a black outline, and a yellow square sliding right 3 px a frame.
+cv::Mat frame_art(int i) {
+    const int k = 8, w = 160, h = 120;
+    cv::Mat big(h * k, w * k, CV_8UC3, cv::Scalar(255, 255, 255));
+    cv::circle(big, cv::Point(45 * k, 60 * k), 30 * k, cv::Scalar(220, 30, 40), cv::FILLED);
+    cv::circle(big, cv::Point(45 * k, 60 * k), 30 * k, cv::Scalar(0, 0, 0), 3 * k);
+    cv::rectangle(big, cv::Rect((95 + 3 * i) * k, 40 * k, 25 * k, 30 * k), cv::Scalar(250, 210, 20), cv::FILLED);
+    cv::Mat small;
+    cv::resize(big, small, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+    return small;
+}
+
+TEST(CartoonSequence, StillShapesAreKeptMovingOnesRedrawn) {
+    TempDir dir;
+    const int n = 5;
+    for (int i = 0; i < n; ++i) {
+        const cv::Mat f = frame_art(i);
+        char name[32];
+        std::snprintf(name, sizeof name, "f.%04d.png", i);
+        ASSERT_TRUE(spt::io::write_image(dir.file(name), uint32_t(f.cols), uint32_t(f.rows), f.data));
+    }
+    const auto r = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("seq.spt"), "--style", "cartoon",
+                                 "--target-psnr", "34", "--progress", "none", "--threads", "2"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto v = run_spt(dir, {"verify", dir.file("seq.spt")});
+    EXPECT_EQ(v.code, 0) << v.out << v.err;
+
+    auto rd = spt::Reader::open(dir.file("seq.spt"));
+    ASSERT_TRUE(rd) << rd.error().message;
+    ASSERT_EQ((*rd)->frames().size(), size_t(n));
+    size_t key_polygons = 0;
+    for (size_t i = 0; i < size_t(n); ++i) {
+        auto f = (*rd)->read_frame(i);
+        ASSERT_TRUE(f);
+        size_t polygons = 0;
+        for (const spt::Stroke& s : f->added) polygons += s.kind == spt::StrokeKind::Polygon;
+        if (i == 0) {
+            EXPECT_EQ(f->type, spt::FrameType::Key);
+            key_polygons = polygons;
+            EXPECT_GE(key_polygons, 3u);
+            continue;
+        }
+        EXPECT_EQ(f->type, spt::FrameType::Inter);
+        // The disc and its outline stay; the square (and what it overlaps) is redrawn.
+        EXPECT_GE(polygons, 1u) << "frame " << i;
+        EXPECT_LT(polygons, key_polygons) << "frame " << i << " redrew everything";
+        auto live = (*rd)->strokes_at(i);
+        ASSERT_TRUE(live);
+        EXPECT_LT(f->removed.size(), (*live)->size()) << "frame " << i;
+        spt::Canvas c;
+        ASSERT_TRUE((*rd)->render_frame(i, c));
+        const cv::Mat src = frame_art(int(i));
+        double sse = 0;
+        for (size_t p = 0; p < c.rgb.size(); ++p) sse += double((int(c.rgb[p]) - src.data[p]) * (int(c.rgb[p]) - src.data[p]));
+        const double psnr = 10 * std::log10(255.0 * 255.0 * double(c.rgb.size()) / std::max(sse, 1.0));
+        EXPECT_GE(psnr, 34.0) << "frame " << i;
+    }
+}
+
+}  // namespace
