@@ -33,7 +33,8 @@ echo "$table" | while read -r t bin corpus maxlen timeout; do
   if [ $# -gt 0 ]; then
     case " $* " in *" $t "*) ;; *) continue ;; esac
   fi
-  cmake --build "$build" --target "$(basename "$bin")" -j2 >/dev/null
+  cmake --build "$build" --target "$(basename "$bin")" -j2 >"$build/build.log" 2>&1 ||
+    { tail -20 "$build/build.log" >&2; echo "fuzz_all.sh: building $(basename "$bin") failed ($build/build.log)" >&2; exit 1; }
   log="$build/findings/$t.log"
   if [ "${REPLAY:-0}" = 1 ]; then
     n=$(ls "$src/tests/$corpus" | wc -l)
