@@ -101,7 +101,8 @@ def check_export_renders_identically(label, obj, path):
     outs = []
     for name, p in (("orig", path), ("exp", exp)):
         pat = os.path.join(work, f"{label}.{name}.####.png")
-        p = subprocess.run([spt, "render", p, "-o", pat], capture_output=True, text=True)
+        # --start 0: files named by position (painted sequences keep their source numbers).
+        p = subprocess.run([spt, "render", p, "-o", pat, "--start", "0"], capture_output=True, text=True)
         C.check(p.returncode == 0, f"{label}: spt render {name}: {p.stderr}")
         outs.append(pat.replace("####", "%04d"))
     n = scene.frame_end - scene.frame_start + 1
