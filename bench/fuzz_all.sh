@@ -65,7 +65,8 @@ echo "$table" | while read -r t bin corpus maxlen timeout; do
   printf '%-11s %12s %8s %8s %7s %9s\n' "$t" "${execs:-?}" "${cov:-?}" "${ft:-?}" "${corp:-?}" "$found"
   [ "$found" -eq 0 ] || grep -E "ERROR|SUMMARY|runtime error|Test unit written" "$log" | head -5 | sed 's/^/    /'
   if [ "${MERGE:-0}" = 1 ] && [ "$found" -eq 0 ]; then
-    "$build/tests/$bin" -merge=1 -max_len="$maxlen" -timeout="$timeout" "$src/tests/$corpus" "$work" >/dev/null 2>&1 || true
+    "$build/tests/$bin" -merge=1 -max_len="$maxlen" -timeout="$timeout" -artifact_prefix="$build/findings/$t-merge-" \
+      "$src/tests/$corpus" "$work" >/dev/null 2>&1 || true
   fi
   rm -rf "$work"
 done

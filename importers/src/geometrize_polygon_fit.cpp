@@ -126,6 +126,17 @@ uint64_t refine(const Objective& f, PolygonStroke& pg, uint64_t best, std::initi
 
 }  // namespace
 
+// The pixels of a polygon's bounding box (its points are Q4).
+uint64_t polygon_box_pixels(const PolygonStroke& pg) {
+    if (pg.points.empty()) return 0;
+    int64_t x0 = pg.points[0].x, x1 = x0, y0 = pg.points[0].y, y1 = y0;
+    for (const auto& p : pg.points) {
+        x0 = std::min<int64_t>(x0, p.x), x1 = std::max<int64_t>(x1, p.x);
+        y0 = std::min<int64_t>(y0, p.y), y1 = std::max<int64_t>(y1, p.y);
+    }
+    return uint64_t((x1 - x0) / 16 + 1) * uint64_t((y1 - y0) / 16 + 1);
+}
+
 bool append_polygon(const Renderer& r, const std::vector<Pix>& vertices, const std::vector<Span>& target, Rgba8 colour,
                     uint32_t w, uint32_t h, std::vector<Stroke>& out, ImportReport& rep, uint64_t& differing) {
     PolygonStroke pg;
@@ -145,11 +156,15 @@ bool append_polygon(const Renderer& r, const std::vector<Pix>& vertices, const s
         rep.note("polygons needing more rendering work than spt::Limits allows dropped");
         return true;
     }
+    // Refining renders the polygon's whole box some 300 times: a box far larger than the canvas
+    // (geometrize's own shapes lie on it; a 357-byte file with a radius of 3430 px took 2 s)
+    // is rendered once, unrefined.
+    const bool refinable = pg.points.size() <= 64 && polygon_box_pixels(pg) <= 4 * uint64_t(w) * h + 4096;
     if (pg.points.size() >= 3)
-        miss = pg.points.size() <= 64 ? refine(f, pg, f(Stroke::make_polygon(pg)), {8, -8, 16, -16}) : f(Stroke::make_polygon(pg));
+        miss = refinable ? refine(f, pg, f(Stroke::make_polygon(pg)), {8, -8, 16, -16}) : f(Stroke::make_polygon(pg));
     if (miss == ~uint64_t(0)) {
         pg.points = lattice_polygon(vertices);
-        if (pg.points.size() >= 3) miss = pg.points.size() <= 64 ? refine(f, pg, f(Stroke::make_polygon(pg))) : f(Stroke::make_polygon(pg));
+        if (pg.points.size() >= 3) miss = refinable ? refine(f, pg, f(Stroke::make_polygon(pg))) : f(Stroke::make_polygon(pg));
     }
     if (miss == ~uint64_t(0)) return false;
     pg.color = colour;
