@@ -113,4 +113,10 @@ TEST(CliSyntax, BadCommandLinesExitTwoWithTheCommandNamed) {
         EXPECT_EQ(r.err.rfind("spt " + args[0] + ": ", 0), 0u) << r.err;
         EXPECT_NE(r.err.find("spt " + args[0] + " --help"), std::string::npos) << r.err;
     }
+    // An unknown option is named even when the required arguments are missing too.
+    for (const std::string cmd : {"paint", "render", "cat", "info"}) {
+        auto r = run_spt(d, {cmd, "--bogus"});
+        EXPECT_EQ(r.code, 2) << cmd;
+        EXPECT_NE(r.err.find("--bogus"), std::string::npos) << cmd << ": " << r.err;
+    }
 }

@@ -96,6 +96,7 @@ struct Args::Impl {
     struct Pos {
         std::string name;
         CLI::Option* cli;
+        bool required;
     };
     CLI::App app;
     std::vector<Opt> opts;
@@ -153,8 +154,9 @@ Args& Args::positional(const std::string& name, const std::string& help, bool re
         o->expected(required ? 1 : 0, CLI::detail::expected_max_vector_size)
             ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
             ->allow_extra_args();
-    if (required) o->required();
-    impl_->pos.push_back({name, o});
+    // Required here, not in CLI11: CLI11 reports a missing argument before an unknown option,
+    // and `spt paint --bogus` should name --bogus.
+    impl_->pos.push_back({name, o, required});
     return *this;
 }
 
@@ -190,8 +192,10 @@ int Args::parse(int argc, char** argv) {
             values_[o.name] = o.cli->results();
         }
     }
-    for (const auto& p : impl_->pos)
+    for (const auto& p : impl_->pos) {
+        if (p.required && p.cli->results().empty()) return usage_error(p.name + " is required");
         if (!p.cli->results().empty()) pos_values_[p.name] = p.cli->results();
+    }
     return -1;
 }
 

@@ -21,7 +21,7 @@ const Command kCommands[] = {
     {"verify", spt::cli::cmd_verify, "check every checksum and decode every frame"},
     {"pack", spt::cli::cmd_pack, "re-code a .spt file: stored to range-coded, or back with --stored"},
     {"import", spt::cli::cmd_import, "bring strokes from other painters (JSON, SVG, geometrize) into .spt"},
-    {"export", spt::cli::cmd_export, "write a .spt file as SVG (one per frame) or as a JSON stroke list"},
+    {"export", spt::cli::cmd_export, "write a .spt file as SVG (one per frame), a JSON stroke list or a web page"},
     {"plan", spt::cli::cmd_plan, "plan a farm job: a sequence or video cut into shots, each a task"},
     {"farm", spt::cli::cmd_farm, "paint a plan on a render farm (Slurm) and join it; or its status"},
     {"cat", spt::cli::cmd_cat, "join .spt files (a farm's shots) losslessly: frames copied, a new index"},
