@@ -117,15 +117,9 @@ int paint_still(const PaintCommandOptions& o) {
     const uint32_t W = img->width, H = img->height;
 
     std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;
-    std::vector<Template> templates;
-    if (o.templates_dir.empty()) {
-        templates = paint::default_templates();
-    } else {
-        auto t = io::load_templates(o.templates_dir);
-        if (!t) return fail(t.error().message);
-        templates = std::move(t.value());
-    }
-    paint::PaintSetup setup = paint::make_setup(W, H, o.background, std::move(sets), std::move(templates));
+    auto templates = paint_templates(o.templates_dir);
+    if (!templates) return fail(templates.error().message);
+    paint::PaintSetup setup = paint::make_setup(W, H, o.background, std::move(sets), std::move(*templates));
 
     paint::PaintOptions po = o.paint;
     po.rois.clear();

@@ -78,16 +78,10 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
     auto img = io::read_image(o.input, ro);
     if (!img) return fail(img.error().message);
     const uint32_t W = img->width, H = img->height;
-    std::vector<Template> templates;
-    if (o.templates_dir.empty()) {
-        templates = paint::default_templates();
-    } else {
-        auto t = io::load_templates(o.templates_dir);
-        if (!t) return fail(t.error().message);
-        templates = std::move(t.value());
-    }
+    auto templates = paint_templates(o.templates_dir);
+    if (!templates) return fail(templates.error().message);
     std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;
-    paint::PaintSetup setup = paint::make_setup(W, H, o.background, std::move(sets), std::move(templates));
+    paint::PaintSetup setup = paint::make_setup(W, H, o.background, std::move(sets), std::move(*templates));
     auto renderer = Renderer::create(setup.header, setup.templates);
     if (!renderer) return fail("cannot set up the renderer: " + renderer.error().message);
 

@@ -3,6 +3,7 @@
 #include "cli/args.hpp"
 
 #include "io/roi_file.hpp"
+#include "io/template_loader.hpp"
 #include "paint/rate_control.hpp"
 
 #include <cerrno>
@@ -314,6 +315,11 @@ std::string PaintCommandOptions::canonical() const {
       << " rois=" << rois.size();
     if (style != "painterly") s << " style=" << style << " outline-tolerance=" << outline_tolerance;  // painterly files keep their bytes
     return s.str();
+}
+
+Result<std::vector<Template>> paint_templates(const std::string& templates_dir) {
+    if (templates_dir.empty()) return paint::default_templates();
+    return io::load_templates(templates_dir);
 }
 
 }  // namespace spt::cli

@@ -64,4 +64,7 @@ struct PaintCommandOptions {
 // `command` names the command in messages and --help (spt plan takes the same options).
 int parse_paint_options(int argc, char** argv, PaintCommandOptions& out, const char* command = "paint");
 
+// The templates a still paint uses: those of --templates DIR, else the painter's defaults.
+Result<std::vector<Template>> paint_templates(const std::string& templates_dir);
+
 }  // namespace spt::cli
