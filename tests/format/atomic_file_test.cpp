@@ -10,49 +10,13 @@
 
 #include "spt/atomic_file.hpp"
 #include "spt/spt.hpp"
+#include "format/test_dir.hpp"
 
 using namespace spt;
+using namespace spt::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Dir {
-    fs::path path;
-    Dir() {
-        const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() / ("spt_atomic_" + std::to_string(::getpid()) + "_" + t->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~Dir() { std::error_code ec; fs::remove_all(path, ec); }
-    std::string operator/(const std::string& n) const { return (path / n).string(); }
-    using Names = std::vector<std::string>;
-    std::vector<std::string> names() const {
-        std::vector<std::string> v;
-        for (const auto& e : fs::directory_iterator(path)) v.push_back(e.path().filename().string());
-        std::sort(v.begin(), v.end());
-        return v;
-    }
-};
-
-std::string slurp(const std::string& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-StreamInfo small_info() {
-    StreamInfo info;
-    info.header.width = 8;
-    info.header.height = 8;
-    info.header.sets = {{4, 2}};
-    info.header.orientations = default_orientations(4);
-    Template e;
-    e.kind = TemplateKind::Ellipse;
-    info.templates = {e};
-    return info;
-}
 
 Status write_one_frame(const std::string& path, const StreamInfo& info) {
     auto w = Writer::create(path, info);
@@ -66,7 +30,7 @@ Status write_one_frame(const std::string& path, const StreamInfo& info) {
 // The old writer opened "<path>.partial" with fopen: a symlink planted there was followed and
 // its target overwritten with .spt bytes.
 TEST(AtomicFile, NeverWritesThroughASymlinkAtTheOldTemporaryName) {
-    Dir d;
+    TestDir d;
     { std::ofstream(d / "victim.txt") << "victim"; }
     fs::create_symlink("victim.txt", d / "o.spt.partial");
     ASSERT_TRUE(write_one_frame(d / "o.spt", small_info()).ok());
@@ -77,7 +41,7 @@ TEST(AtomicFile, NeverWritesThroughASymlinkAtTheOldTemporaryName) {
 
 // A symlink at the final name is replaced by the file, never written through.
 TEST(AtomicFile, ReplacesASymlinkAtTheFinalNameWithoutFollowingIt) {
-    Dir d;
+    TestDir d;
     { std::ofstream(d / "victim.txt") << "victim"; }
     fs::create_symlink("victim.txt", d / "o.spt");
     fs::create_symlink("nowhere", d / "dangling.spt");
@@ -93,7 +57,7 @@ TEST(AtomicFile, ReplacesASymlinkAtTheFinalNameWithoutFollowingIt) {
 // On Linux the temporary has no name at all: the folder shows nothing until commit, and nothing
 // after discard (or after a crash, which discards the same way).
 TEST(AtomicFile, IsUnnamedUntilCommittedAndLeavesNothingWhenDiscarded) {
-    Dir d;
+    TestDir d;
     {
         auto f = AtomicFile::create(d / "a.bin");
         ASSERT_TRUE(f.ok()) << f.error().message;
@@ -116,7 +80,7 @@ TEST(AtomicFile, IsUnnamedUntilCommittedAndLeavesNothingWhenDiscarded) {
 }
 
 TEST(AtomicFile, ReplacesAnExistingFileAtomically) {
-    Dir d;
+    TestDir d;
     { std::ofstream(d / "a.bin") << "old"; }
     ASSERT_TRUE(write_file_atomic(d / "a.bin", "new", 3).ok());
     EXPECT_EQ(slurp(d / "a.bin"), "new");
@@ -124,7 +88,7 @@ TEST(AtomicFile, ReplacesAnExistingFileAtomically) {
 }
 
 TEST(AtomicFile, RefusesFoldersMissingFoldersAndReadOnlyFolders) {
-    Dir d;
+    TestDir d;
     fs::create_directories(d / "sub");
     auto a = AtomicFile::create(d / "sub");
     ASSERT_FALSE(a.ok());
@@ -144,7 +108,7 @@ TEST(AtomicFile, RefusesFoldersMissingFoldersAndReadOnlyFolders) {
 }
 
 TEST(AtomicFile, WriterAbortLeavesNothing) {
-    Dir d;
+    TestDir d;
     auto w = Writer::create(d / "o.spt", small_info());
     ASSERT_TRUE(w.ok());
     Frame f;
@@ -156,7 +120,7 @@ TEST(AtomicFile, WriterAbortLeavesNothing) {
 // Where O_TMPFILE is missing: an exclusively created random name beside the destination, which
 // a symlink planted at any name cannot redirect, renamed into place; nothing left on discard.
 TEST(AtomicFile, NamedFallbackIsExclusiveAndCleansUp) {
-    Dir d;
+    TestDir d;
     { std::ofstream(d / "victim.txt") << "victim"; }
     fs::create_symlink("victim.txt", d / "o.bin");
     auto f = AtomicFile::create(d / "o.bin", false);

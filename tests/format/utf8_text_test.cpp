@@ -6,41 +6,13 @@
 #include <filesystem>
 
 #include "spt/spt.hpp"
+#include "format/test_dir.hpp"
 
 using namespace spt;
+using namespace spt::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Dir {
-    fs::path path;
-    Dir() {
-        const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() / ("spt_atomic_" + std::to_string(::getpid()) + "_" + t->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~Dir() { std::error_code ec; fs::remove_all(path, ec); }
-    std::string operator/(const std::string& n) const { return (path / n).string(); }
-    std::vector<std::string> names() const {
-        std::vector<std::string> v;
-        for (const auto& e : fs::directory_iterator(path)) v.push_back(e.path().filename().string());
-        std::sort(v.begin(), v.end());
-        return v;
-    }
-};
-
-StreamInfo small_info() {
-    StreamInfo info;
-    info.header.width = 8;
-    info.header.height = 8;
-    info.header.sets = {{4, 2}};
-    info.header.orientations = default_orientations(4);
-    Template e;
-    e.kind = TemplateKind::Ellipse;
-    info.templates = {e};
-    return info;
-}
 
 }  // namespace
 
@@ -61,7 +33,7 @@ TEST(Utf8, AcceptsWellFormedAndRejectsTheRest) {
 }
 
 TEST(WriterText, RefusesMetadataThatIsNotUtf8NamingTheKey) {
-    Dir d;
+    TestDir d;
     StreamInfo info = small_info();
     info.metadata = {{"software", "ok"}, {"title", "caf\xE9"}};
     auto w = Writer::create(d / "o.spt", info);
