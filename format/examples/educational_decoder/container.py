@@ -166,7 +166,8 @@ def open_spt(data):
         for c in chunks:
             where = f"chunk {c.type!r} at offset {c.offset}"
             if not c.crc_ok:
-                if spt.frames:
+                # From the first FRAM on (that FRAM included), damage ends the scan.
+                if spt.frames or c.type in (b"FRAM", b"IEND"):
                     spt.problem = f"{where} fails its CRC"
                     return spt
                 if is_critical(c.type):
