@@ -56,6 +56,14 @@ const char* field_name(Field f) {
     return "?";
 }
 
+const char* color_encoding_name(ColorEncoding e) {
+    switch (e) {
+        case ColorEncoding::Srgb8: return "srgb8";
+        case ColorEncoding::LinearHalf: return "linear-half";
+    }
+    return "unknown";
+}
+
 const char* template_kind_name(TemplateKind k) {
     switch (k) {
         case TemplateKind::Bitmap: return "bitmap";

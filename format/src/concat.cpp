@@ -60,10 +60,12 @@ Status same_canvas(const Header& a, const Header& b, const std::string& name, co
     if (!(a.fps == b.fps)) return differ("the frame rate", rational(a.fps), rational(b.fps));
     if (a.color != b.color)
         return differ("the colour encoding", std::to_string(int(a.color)), std::to_string(int(b.color)));
-    if (!(a.background == b.background)) {
-        auto rgb = [](const Rgb8& c) { return std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b); };
-        return differ("the background", rgb(a.background), rgb(b.background));
-    }
+    if (a.alpha != b.alpha)
+        return differ("the alpha channel", a.alpha ? "alpha" : "no alpha", b.alpha ? "alpha" : "no alpha");
+    auto rgb = [](const Rgb8& c) { return std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b); };
+    if (!(a.background == b.background)) return differ("the background", rgb(a.background), rgb(b.background));
+    if (!(a.background_lo == b.background_lo))
+        return differ("the background's low bytes", rgb(a.background_lo), rgb(b.background_lo));
     if (a.sets != b.sets) return differ("the stroke sets", sets_text(a.sets), sets_text(b.sets));
     if (a.orientations != b.orientations)
         return differ("the orientation table", std::to_string(a.orientations.size()) + " entries",

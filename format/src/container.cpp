@@ -38,7 +38,7 @@ std::vector<uint8_t> encode_head(const Header& h) {
     ByteSink s;
     s.u16(h.version_major);
     s.u16(h.version_minor);
-    s.u32(0);
+    s.u32(h.alpha ? kHeadFlagAlpha : 0);
     s.u32(h.width);
     s.u32(h.height);
     s.u32(h.fps.num);
@@ -51,6 +51,10 @@ std::vector<uint8_t> encode_head(const Header& h) {
     s.u16(0);
     for (const auto& st : h.sets) { s.u16(st.width); s.u16(st.height); }
     for (const auto& o : h.orientations) { s.i16(o.cos_q14); s.i16(o.sin_q14); }
+    if (h.color == ColorEncoding::LinearHalf) {
+        s.u8(h.background_lo.r); s.u8(h.background_lo.g); s.u8(h.background_lo.b);
+        s.u8(0);
+    }
     return std::move(s.bytes());
 }
 
@@ -64,7 +68,8 @@ Status decode_head(const uint8_t* p, size_t n, uint64_t off, const Limits& lim, 
     if (h.version_major != 1)
         return c.error(Code::Unsupported, "format major version " + std::to_string(h.version_major) + " is not 1");
     SPT_TRY(c.u32(flags, "flags"));
-    if (flags) return c.error(Code::Unsupported, "reserved flags are not 0");
+    if (flags & ~kHeadFlagAlpha) return c.error(Code::Unsupported, "reserved flags are not 0");
+    h.alpha = (flags & kHeadFlagAlpha) != 0;
     SPT_TRY(c.u32(h.width, "width"));
     SPT_TRY(c.u32(h.height, "height"));
     SPT_TRY(c.u32(h.fps.num, "fps_num"));
@@ -72,8 +77,8 @@ Status decode_head(const uint8_t* p, size_t n, uint64_t off, const Limits& lim, 
     SPT_TRY(c.u32(h.frame_count, "frame_count"));
     SPT_TRY(c.u8(u8v, "color_encoding"));
     color = u8v;
-    if (color != 0) return c.error(Code::Unsupported, "colour encoding " + std::to_string(color) + " is reserved");
-    h.color = ColorEncoding::Srgb8;
+    if (color > 1) return c.error(Code::Unsupported, "colour encoding " + std::to_string(color) + " is reserved");
+    h.color = ColorEncoding(color);
     SPT_TRY(c.u8(h.background.r, "background"));
     SPT_TRY(c.u8(h.background.g, "background"));
     SPT_TRY(c.u8(h.background.b, "background"));
@@ -89,6 +94,14 @@ Status decode_head(const uint8_t* p, size_t n, uint64_t off, const Limits& lim, 
     for (auto& s : h.sets) { SPT_TRY(c.u16(s.width, "set width")); SPT_TRY(c.u16(s.height, "set height")); }
     h.orientations.resize(norient);
     for (auto& o : h.orientations) { SPT_TRY(c.i16(o.cos_q14, "cos")); SPT_TRY(c.i16(o.sin_q14, "sin")); }
+    h.background_lo = Rgb8{0, 0, 0};
+    if (h.color == ColorEncoding::LinearHalf) {
+        SPT_TRY(c.u8(h.background_lo.r, "background_lo"));
+        SPT_TRY(c.u8(h.background_lo.g, "background_lo"));
+        SPT_TRY(c.u8(h.background_lo.b, "background_lo"));
+        SPT_TRY(c.u8(u8v, "reserved"));
+        if (u8v) return c.error(Code::Unsupported, "reserved byte after background_lo is not 0");
+    }
     if (c.left()) return c.error(Code::Corrupt, std::to_string(c.left()) + " bytes follow the orientation table");
     return check_header(h, lim, Code::Corrupt, "HEAD", off);
 }

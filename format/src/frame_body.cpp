@@ -7,7 +7,7 @@ namespace spt::detail {
 void encode_frame_body(const Frame& f, Coding coding, const StreamShape& shape, std::vector<uint8_t>& out,
                        BodySplit* split, FieldStats* stats) {
     // Coding 2 needs the writer's canvas state (encode_replay_body); without it, coding 1.
-    if (coding == Coding::Stored) encode_stored_body(f, out, split, stats);
+    if (coding == Coding::Stored) encode_stored_body(f, shape.linear, out, split, stats);
     else encode_range_body(f, shape, out, split, stats);
 }
 
@@ -22,7 +22,11 @@ Status decode_frame_body(FrameType type, Coding coding, const uint8_t* p, size_t
     } else {
         out.added.clear();
         if (coding == Coding::Range) SPT_TRY(decode_range_body(type, p, n, ctx, out, split));
-        else if (coding == Coding::Replay) SPT_TRY(decode_replay_body(type, p, n, ctx, out, split));
+        else if (coding == Coding::Replay) {
+            if (!ctx.shape.plain_color())
+                return make_error(Code::Corrupt, ctx.where + ": frame coding 2 in a file with an alpha canvas or colour encoding 1", ctx.offset);
+            SPT_TRY(decode_replay_body(type, p, n, ctx, out, split));
+        }
         else return make_error(Code::Unsupported, ctx.where + ": coding " + std::to_string(int(coding)) + " is reserved", ctx.offset);
     }
     return check_frame(out, ctx.shape, ctx.limits, ctx.prev_live, Code::Corrupt, ctx.where, ctx.offset, checked);

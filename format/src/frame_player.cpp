@@ -16,7 +16,7 @@ Status ReaderImpl::ensure_renderer(const std::string& where, uint64_t off) {
 
 bool ReaderImpl::render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads) {
     const FrameEntry& e = frames_[pos];
-    if (e.type != FrameType::Key || e.coding != Coding::Stored) return false;
+    if (e.type != FrameType::Key || e.coding != Coding::Stored || !info_.header.plain_color()) return false;
     Chunk c;
     const SparePayload spare(c.payload, spare_payload_);
     // The checks of decode() and decode_stored_body(); anything unusual takes the general path,

@@ -152,6 +152,14 @@ void span_mask_make_dense(SpanMask& m);
 // mask column `first`): trims zero ends, stores the span with its padding.
 void span_mask_add_row(SpanMask& m, const uint8_t* cov, int64_t n, int64_t first);
 
+// The colour the 8-bit kernels blend: an encoding-0 stroke colour without the low bytes of
+// encoding 1 (those canvases are drawn by render_deep.cpp), so that a TileItem stays 16 bytes.
+struct Rgba4 {
+    uint8_t r = 0, g = 0, b = 0, a = 255;
+    Rgba4() = default;
+    Rgba4(const Rgba8& c) : r(c.r), g(c.g), b(c.b), a(c.a) {}  // NOLINT: implicit by design
+};
+
 // Where spans are composited: canvas pixels [x0, x1) x [y0, y1) stored at px (pixel (x0, y0))
 // with `stride` bytes a row. `slack`: every row has kSpanPad writable bytes past column x1
 // that nobody else reads (a tile buffer), which lets short spans run past their end; without
@@ -173,7 +181,7 @@ struct PlacedSpans {
     const uint32_t* extent = nullptr;  // SpanMask::extent
     int32_t ox = 0, oy = 0;  // canvas position of column 0 / row 0
     uint32_t h = 0;          // rows
-    Rgba8 c;
+    Rgba4 c;
     uint32_t dense_steps = 0;
     uint32_t core_words = 0;
 };
@@ -194,7 +202,7 @@ struct TileItem {
     int32_t ox = 0, oy = 0;  // canvas position of the mask's column 0 / row 0
     uint32_t mask = 0;       // index into the frame's MaskRef table; kNoMask: the stroke whose
                              // index is ox is drawn from its own geometry
-    Rgba8 c;
+    Rgba4 c;
 };
 static_assert(sizeof(TileItem) == 16);
 inline PlacedSpans placed(const TileItem& it, const MaskRef& m) {
@@ -215,7 +223,7 @@ inline PlacedSpans placed(const TileItem& it, const MaskRef& m) {
 // Composites p (SPEC 8.6), clipped to t.
 void blend_spans(const BlendTarget& t, const PlacedSpans& p);
 // Composites mask m with its column 0 / row 0 at canvas (ox, oy), clipped to t.
-void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy, Rgba8 c);
+void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy, Rgba4 c);
 // Composites rows [j0, j1) of p's dense box, row j0 at `origin` (p's canvas pixel
 // (ox, oy + j0)), rows `stride` bytes apart: every byte of those rows' dense_steps * 64 bytes
 // is read and written (bytes outside the spans keep their value). The caller guarantees the
@@ -231,7 +239,7 @@ void blend_spans_cols(const BlendTarget& t, const PlacedSpans& p, const uint8_t*
 // True when blend_dense draws on this ISA.
 bool dense_available();
 // Composites one row of one-byte coverage: n pixels starting at canvas (x, y), clipped to t.
-void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c);
+void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba4 c);
 
 enum class BlendIsa { Best, Scalar, Sse2, Avx2, Avx512 };
 // Test hook: forces the span kernels of blend_spans/blend_cov_row and the culling kernels

@@ -71,7 +71,7 @@ struct DrawOp {
     uint32_t item = 0;               // SpanCols, Whole: index in the tile's list
     uint8_t steps = 0;               // Dense: SpanMask::dense_steps
     Kind kind = Whole;
-    Rgba8 c;                         // Dense: the colour
+    Rgba4 c;                         // Dense: the colour
 };
 
 // Draws the run of Dense ops that ends at ops[k - 1] (ops[k - 1], ops[k - 2], ... down to the

@@ -277,7 +277,7 @@ struct Pat96 {
     operator uint8_t*() { return b; }
     operator const uint8_t*() const { return b; }
 };
-void make_pattern(uint8_t* pat96, Rgba8 c) {
+void make_pattern(uint8_t* pat96, Rgba4 c) {
     for (int i = 0; i < 32; ++i) {
         pat96[3 * i] = c.r;
         pat96[3 * i + 1] = c.g;
@@ -287,7 +287,7 @@ void make_pattern(uint8_t* pat96, Rgba8 c) {
 
 #ifdef SPT_SPAN_X86
 // The same with three byte shuffles of the broadcast colour.
-__attribute__((target("avx2"))) inline void make_pattern_avx2(uint8_t* pat96, Rgba8 c) {
+__attribute__((target("avx2"))) inline void make_pattern_avx2(uint8_t* pat96, Rgba4 c) {
     uint32_t word;
     std::memcpy(&word, &c, 4);
     const __m256i v = _mm256_set1_epi32(int32_t(word));
@@ -312,7 +312,7 @@ struct Pat512 {
 alignas(64) constexpr uint8_t kPhase[66] = {
     0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2,
     0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2};
-__attribute__((target("avx512f,avx512bw"))) inline void make_pattern512(Pat512& pat, Rgba8 c) {
+__attribute__((target("avx512f,avx512bw"))) inline void make_pattern512(Pat512& pat, Rgba4 c) {
     uint32_t word;
     std::memcpy(&word, &c, 4);
     // vpshufb picks within each 128-bit lane; every lane holds the colour in its bytes 0..2.
@@ -420,7 +420,7 @@ __attribute__((target("avx512f,avx512bw"))) size_t dense_ops_avx512(uint8_t* ori
 }
 
 __attribute__((target("avx512f,avx512bw"))) void dense_avx512(uint8_t* dst, size_t stride, const uint8_t* cov, uint32_t h,
-                                                              uint32_t steps, Rgba8 c) {
+                                                              uint32_t steps, Rgba4 c) {
     Pat512 pat;
     make_pattern512(pat, c);
     for (uint32_t j = 0; j < h; j += 64, dst += 64 * stride, cov += size_t(64) * 128 * steps) {
@@ -440,7 +440,7 @@ __attribute__((target("avx512f,avx512bw"))) void dense_avx512(uint8_t* dst, size
 #undef SPT_SPANS_COLS_LOOP
 
 using SpansFn = void (*)(const BlendTarget&, const PlacedSpans&);
-using DenseFn = void (*)(uint8_t*, size_t, const uint8_t*, uint32_t, uint32_t, Rgba8);
+using DenseFn = void (*)(uint8_t*, size_t, const uint8_t*, uint32_t, uint32_t, Rgba4);
 
 using SpansColsFn = void (*)(const BlendTarget&, const PlacedSpans&, const uint8_t*, uint64_t);
 
@@ -584,7 +584,7 @@ void blend_spans(const BlendTarget& t, const PlacedSpans& p) {
     kernels().spans(t, p);
 }
 
-void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy, Rgba8 c) {
+void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy, Rgba4 c) {
     PlacedSpans p;
     p.rows = m.rows.data();
     p.cov3 = m.cov3.data();
@@ -595,7 +595,7 @@ void blend_spans(const BlendTarget& t, const SpanMask& m, int64_t ox, int64_t oy
     blend_spans(t, p);
 }
 
-void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba8 c) {
+void blend_cov_row(const BlendTarget& t, int64_t x, int64_t y, const uint8_t* cov, int64_t n, Rgba4 c) {
     if (c.a == 0 || y < t.y0 || y >= t.y1) return;
     int64_t lo = std::max<int64_t>(0, t.x0 - x), hi = std::min<int64_t>(n, t.x1 - x);
     while (lo < hi && cov[lo] == 0) ++lo;

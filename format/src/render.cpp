@@ -57,6 +57,13 @@ RendererImpl::RendererImpl(const Header& h, const std::vector<Template>& t)
 }
 
 Status RendererImpl::check(const Stroke& s) const {
+    const Rgba8& col = s.color();
+    if (header_.color == ColorEncoding::LinearHalf) {
+        for (int ch = 0; ch < 3; ++ch)
+            if (code16(col, ch) > kMaxHalfCode) return bad("stroke colour code " + std::to_string(code16(col, ch)) + " is not a finite half float >= 0");
+    } else if (col.r_lo | col.g_lo | col.b_lo) {
+        return bad("stroke colour has low bytes, which only colour encoding 1 has");
+    }
     switch (s.kind) {
         case StrokeKind::Stamp: {
             const StampStroke& t = s.stamp;
@@ -204,6 +211,7 @@ void RendererImpl::draw_into(const BlendTarget& t, const Stroke& s) const {
 }
 
 Status RendererImpl::draw(Canvas& canvas, const Stroke& s) const {
+    if (!header_.plain_color()) return draw_deep(canvas, s);
     if (canvas.rgb.size() != size_t(canvas.width) * canvas.height * 3)
         return bad("canvas: pixel buffer size does not match width x height x 3");
     if (Status st = check(s); !st) return st;

@@ -42,6 +42,9 @@ public:
     // detail::render_stamp_frame (stamp_frame.hpp): a key frame of stamps binned straight from
     // their source, without a Stroke list.
     bool render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads, uint64_t work_limit) const;
+    // Alpha canvases and colour encoding 1 (render_deep.cpp): stroke by stroke, exact.
+    Status draw_deep(Canvas& canvas, const Stroke& s) const;
+    Status render_deep(Canvas& canvas, const std::vector<Stroke>& strokes) const;
     // Range and reference checks of one stroke (SPEC 8.7).
     Status check(const Stroke& s) const;
     // check(s) of a stamp, without the message: true when it passes.

@@ -149,7 +149,7 @@ public:
         return add_kind(t, set, tmpl, orient);
     }
     // Adds a valid stamp at Q4 (x, y) of kind k.
-    void add_stamp(const StampKind& k, int32_t x, int32_t y, Rgba8 c) {
+    void add_stamp(const StampKind& k, int32_t x, int32_t y, Rgba4 c) {
         if (c.a == 0 || k.h1 < 0) return;
         TileItem it;
         it.c = c;
@@ -352,6 +352,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes) 
 }
 
 Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const {
+    if (!header_.plain_color()) return render_deep(canvas, strokes);
     // Check and prepare every stroke (this also builds the footprints, so the tile pass only
     // reads shared state). On a bad stroke, the strokes before it are still drawn, as drawing
     // them one by one would have done, and the error names it.
@@ -391,6 +392,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
 
 bool RendererImpl::render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads,
                                  uint64_t work_limit) const {
+    if (!header_.plain_color()) return false;
     Bins& bins = scratch_bins();
     Binner binner(*this, bins, src.count);
     const uint32_t S = uint32_t(header_.sets.size()), T = uint32_t(templates_.size());

@@ -11,11 +11,15 @@
 namespace spt::detail {
 namespace {
 
-void put_stroke(ByteSink& s, const Stroke& st, FieldStats* stats) {
+void put_stroke(ByteSink& s, const Stroke& st, bool linear, FieldStats* stats) {
     auto add = [&](Field f, double bytes) { if (stats) (*stats)[f] += 8.0 * bytes; };
     s.u8(uint8_t(st.kind));
     add(Field::Kind, 1);
-    auto rgba = [&](const Rgba8& c) { s.u8(c.r); s.u8(c.g); s.u8(c.b); s.u8(c.a); add(Field::Color, 3); add(Field::Alpha, 1); };
+    auto rgba = [&](const Rgba8& c) {
+        s.u8(c.r); s.u8(c.g); s.u8(c.b); s.u8(c.a);
+        add(Field::Color, 3); add(Field::Alpha, 1);
+        if (linear) { s.u8(c.r_lo); s.u8(c.g_lo); s.u8(c.b_lo); add(Field::Color, 3); }  // SPEC.md 6, encoding 1
+    };
     switch (st.kind) {
         case StrokeKind::Stamp: {
             const auto& t = st.stamp;
@@ -61,6 +65,11 @@ Status get_stroke(ByteCursor& c, Stroke& st, const DecodeContext& ctx, uint32_t 
     auto rgba = [&](Rgba8& col) -> Status {
         SPT_TRY(c.u8(col.r, "colour")); SPT_TRY(c.u8(col.g, "colour"));
         SPT_TRY(c.u8(col.b, "colour")); SPT_TRY(c.u8(col.a, "colour"));
+        col.r_lo = col.g_lo = col.b_lo = 0;
+        if (ctx.shape.linear) {
+            SPT_TRY(c.u8(col.r_lo, "colour low byte")); SPT_TRY(c.u8(col.g_lo, "colour low byte"));
+            SPT_TRY(c.u8(col.b_lo, "colour low byte"));
+        }
         return {};
     };
     switch (kind) {
@@ -130,7 +139,7 @@ bool fill_stamps(const void* ctx, size_t first, size_t n, StampStroke* out) {
     // little-endian host, a record is one 16-byte copy and a fix of its first word (kind, set,
     // template, orientation -> set, template, orientation): the player's path copies 30,000 of
     // them a frame.
-    constexpr bool kSameTail = std::endian::native == std::endian::little && sizeof(StampStroke) == 16 &&
+    constexpr bool kSameTail = std::endian::native == std::endian::little && sizeof(StampStroke) >= 16 &&
                                offsetof(StampStroke, x) == 4 && offsetof(StampStroke, y) == 8 &&
                                offsetof(StampStroke, color) == 12 && offsetof(StampStroke, orient) == 2;
     for (size_t i = 0; i < n; ++i, q += 16) {
@@ -138,6 +147,7 @@ bool fill_stamps(const void* ctx, size_t first, size_t n, StampStroke* out) {
         StampStroke& t = out[i];
         if constexpr (kSameTail) {
             std::memcpy(static_cast<void*>(&t), q, 16);
+            t.color.r_lo = t.color.g_lo = t.color.b_lo = 0;
             t.set = q[1];
             t.tmpl = q[2];
             t.orient = q[3];
@@ -166,7 +176,7 @@ bool stored_key_stamps(const uint8_t* body, size_t n, const Limits& limits, Stam
     return true;
 }
 
-void encode_stored_body(const Frame& f, std::vector<uint8_t>& out, BodySplit* split, FieldStats* stats) {
+void encode_stored_body(const Frame& f, bool linear, std::vector<uint8_t>& out, BodySplit* split, FieldStats* stats) {
     ByteSink s;
     size_t motion_bytes = 0;
     if (f.type == FrameType::Inter) {
@@ -183,7 +193,7 @@ void encode_stored_body(const Frame& f, std::vector<uint8_t>& out, BodySplit* sp
     }
     s.u32(uint32_t(f.added.size()));
     if (stats) (*stats)[Field::Count] += 32.0;
-    for (const auto& st : f.added) put_stroke(s, st, stats);
+    for (const auto& st : f.added) put_stroke(s, st, linear, stats);
     if (split) *split = BodySplit::of(s.size(), motion_bytes, uint32_t(f.added.size()), uint32_t(f.removed.size()));
     out.insert(out.end(), s.bytes().begin(), s.bytes().end());
 }
@@ -234,7 +244,7 @@ Status decode_stored_body(FrameType type, const uint8_t* p, size_t n, const Deco
     for (uint32_t i = 0; i < added; ++i) {
         Stroke& st = out.added[i];
         // The common record, a whole stamp, without a Status per field (most of a painting).
-        if (c.left() >= 16 && c.here()[0] == 0) {
+        if (!ctx.shape.linear && c.left() >= 16 && c.here()[0] == 0) {
             const uint8_t* q = c.here() + 1;
             st.kind = StrokeKind::Stamp;
             st.stamp.set = q[0]; st.stamp.tmpl = q[1]; st.stamp.orient = q[2];
@@ -259,7 +269,7 @@ Status decode_stored_body(FrameType type, const uint8_t* p, size_t n, const Deco
     if (ctx.stats) {
         BodySplit dummy;
         std::vector<uint8_t> scratch;
-        encode_stored_body(out, scratch, &dummy, ctx.stats);  // exact byte accounting
+        encode_stored_body(out, ctx.shape.linear, scratch, &dummy, ctx.stats);  // exact byte accounting
     }
     if (split) *split = BodySplit::of(n, motion_bytes, added, uint32_t(out.removed.size()));
     return {};

@@ -77,6 +77,7 @@ struct StrokeCoderState {
     Res8Model color[3][4];            // [G, R-G, B-G][class]
     uint16_t opaque;
     BitTree alpha;
+    std::array<BitTree, 3> color_lo;  // [G, R, B] low bytes, colour encoding 1 (format 1.3)
     SIntModel matrix[4];
     uint16_t axis_aligned, same_scale, similarity;  // affine matrix form (SPEC.md 7.4)
     BitTree matrix_shift;
@@ -104,6 +105,7 @@ struct StrokeCoderState {
         for (auto& t : orient) t.reset(ob);
         for (auto& g : pos) { g[0].reset(sh.width); g[1].reset(sh.height); }
         alpha.reset(8);
+        for (auto& t : color_lo) t.reset(8);
         axis_aligned = same_scale = similarity = kProbInit;
         matrix_shift.reset(3);
         grid_w = (sh.width + 7) >> kColorCellShift;
@@ -169,6 +171,14 @@ SPT_CODER_INLINE void code_color(C& c, StrokeCoderState& st, Rgba8& col, int32_t
     } else {
         col.a = uint8_t(code_tree(c, st.alpha, col.a));
         if (col.a == 255) err.set("alpha 255 coded without its flag");
+    }
+    if (st.shape.linear) {
+        c.set_field(Field::Color);
+        col.g_lo = uint8_t(code_tree(c, st.color_lo[0], col.g_lo));
+        col.r_lo = uint8_t(code_tree(c, st.color_lo[1], col.r_lo));
+        col.b_lo = uint8_t(code_tree(c, st.color_lo[2], col.b_lo));
+    } else {
+        col.r_lo = col.g_lo = col.b_lo = 0;
     }
     st.update(ax, ay, col);
 }

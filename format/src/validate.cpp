@@ -26,8 +26,20 @@ Status check_header(const Header& h, const Limits& lim, Code code, const std::st
         return fail(Code::LimitExceeded, where, "canvas " + std::to_string(h.width) + "x" + std::to_string(h.height) +
                     " exceeds the limits", off);
     if (h.fps.num == 0 || h.fps.den == 0) return fail(code, where, "frame rate has a zero term", off);
-    if (h.color != ColorEncoding::Srgb8)
-        return fail(Code::Unsupported, where, "colour encoding " + std::to_string(int(h.color)) + " is not 0", off);
+    if (h.color != ColorEncoding::Srgb8 && h.color != ColorEncoding::LinearHalf)
+        return fail(Code::Unsupported, where, "colour encoding " + std::to_string(int(h.color)) + " is reserved", off);
+    if (!h.plain_color() && h.version_minor < kAlphaLinearMinorVersion)
+        return fail(code, where, "an alpha canvas or colour encoding 1 needs format 1.3, the header says 1." +
+                    std::to_string(h.version_minor), off);
+    if (h.color == ColorEncoding::Srgb8 && h.background_lo != Rgb8{0, 0, 0})
+        return fail(code, where, "background low bytes are set in colour encoding 0", off);
+    if (h.color == ColorEncoding::LinearHalf)
+        for (int ch = 0; ch < 3; ++ch) {
+            const uint8_t hi = ch == 0 ? h.background.r : ch == 1 ? h.background.g : h.background.b;
+            const uint8_t lo = ch == 0 ? h.background_lo.r : ch == 1 ? h.background_lo.g : h.background_lo.b;
+            if ((hi << 8 | lo) > kMaxHalfCode)
+                return fail(code, where, "background code " + std::to_string(hi << 8 | lo) + " is not a finite half float >= 0", off);
+        }
     if (h.sets.empty() || h.sets.size() > kMaxSets)
         return fail(code, where, "set count " + std::to_string(h.sets.size()) + " is not 1..16", off);
     for (size_t i = 0; i < h.sets.size(); ++i)
@@ -65,6 +77,9 @@ Status check_template(const Template& t, const Limits& lim, Code code, const std
 
 Status check_stroke(const Stroke& s, const StreamShape& sh, const Limits& lim, Code code,
                     const std::string& where, uint64_t off) {
+    if (!color_ok(s.color(), sh))
+        return fail(code, where, sh.linear ? "colour code is not a finite half float >= 0 (0..0x7BFF)"
+                                           : "colour has low bytes, which only colour encoding 1 has", off);
     switch (s.kind) {
         case StrokeKind::Stamp: {
             const auto& t = s.stamp;

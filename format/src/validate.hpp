@@ -23,10 +23,14 @@ struct StreamShape {
     uint32_t sets = 0, orientations = 0, templates = 0;
     // HEAD's version_minor: coding 1 codes the polygon kind flag only from 1.2 on (SPEC.md 7.4).
     uint32_t version_minor = 0;
+    // Colour encoding 1: every stroke colour carries 16-bit codes (SPEC.md 6, 7.4).
+    bool linear = false;
+    bool alpha = false;  // HEAD flag: frame coding 2 is not defined for such canvases (SPEC.md 7.7)
     static StreamShape of(const Header& h, size_t templates) {
         return {h.width, h.height, uint32_t(h.sets.size()), uint32_t(h.orientations.size()), uint32_t(templates),
-                h.version_minor};
+                h.version_minor, h.color == ColorEncoding::LinearHalf, h.alpha};
     }
+    bool plain_color() const { return !linear && !alpha; }
     bool has_polygons() const { return version_minor >= 2; }
 };
 // First format minor version with polygon strokes.
@@ -48,8 +52,14 @@ constexpr uint64_t kUnknownLive = ~uint64_t(0);
 Status check_frame(const Frame& f, const StreamShape& shape, const Limits& lim, uint64_t prev_live,
                    Code code, const std::string& where, uint64_t offset, size_t checked = 0);
 // check_stroke(s, ...) of a stamp passes (the test alone, no message).
+// Colour encoding 0 has no low bytes; encoding 1 codes are finite half floats >= 0 (SPEC.md 4).
+inline bool color_ok(const Rgba8& c, const StreamShape& sh) {
+    if (!sh.linear) return (c.r_lo | c.g_lo | c.b_lo) == 0;
+    return code16(c, 0) <= kMaxHalfCode && code16(c, 1) <= kMaxHalfCode && code16(c, 2) <= kMaxHalfCode;
+}
+
 inline bool stamp_ok(const StampStroke& t, const StreamShape& sh) {
-    return t.set < sh.sets && t.tmpl < sh.templates && t.orient < sh.orientations && t.x >= -kMaxCoord &&
+    return color_ok(t.color, sh) && t.set < sh.sets && t.tmpl < sh.templates && t.orient < sh.orientations && t.x >= -kMaxCoord &&
            t.x <= kMaxCoord && t.y >= -kMaxCoord && t.y <= kMaxCoord;
 }
 

@@ -260,7 +260,12 @@ Result<std::unique_ptr<Writer>> Writer::create(const std::string& path, const St
     lim.max_width = lim.max_height = 0xFFFFFFFFu;
     lim.max_pixels = ~uint64_t(0);
     lim.max_template_side = detail::kMaxTemplateSide;
-    if (auto st = detail::check_header(info.header, lim, Code::InvalidArgument, path + ": header", 0); !st) return st.error();
+    // An alpha canvas or colour encoding 1 is format 1.3: the writer says so itself, as it does
+    // for coding 2 and polygons.
+    StreamInfo checked_info = info;
+    Header& hd = checked_info.header;
+    if (!hd.plain_color() && hd.version_minor < kAlphaLinearMinorVersion) hd.version_minor = kAlphaLinearMinorVersion;
+    if (auto st = detail::check_header(hd, lim, Code::InvalidArgument, path + ": header", 0); !st) return st.error();
     if (info.templates.size() > 255)
         return make_error(Code::InvalidArgument, path + ": " + std::to_string(info.templates.size()) + " templates, at most 255");
     for (size_t i = 0; i < info.templates.size(); ++i)
@@ -269,8 +274,10 @@ Result<std::unique_ptr<Writer>> Writer::create(const std::string& path, const St
     if (auto st = check_text(info, path); !st) return st.error();
     if (opts.coding != Coding::Stored && opts.coding != Coding::Range && opts.coding != Coding::Replay)
         return make_error(Code::InvalidArgument, path + ": unknown frame coding");
-    auto w = std::make_unique<FileWriter>(path, info, opts);
-    if (auto st = w->open_and_write_start(info); !st) return st.error();
+    WriterOptions o = opts;
+    if (!hd.plain_color() && o.coding == Coding::Replay) o.coding = Coding::Range;  // 7.7: plain canvases only
+    auto w = std::make_unique<FileWriter>(path, checked_info, o);
+    if (auto st = w->open_and_write_start(checked_info); !st) return st.error();
     return std::unique_ptr<Writer>(std::move(w));
 }
 

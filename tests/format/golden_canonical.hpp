@@ -16,10 +16,14 @@ inline void put32(std::vector<uint8_t>& b, uint32_t v) {
     for (int i = 0; i < 4; ++i) b.push_back(uint8_t(v >> (8 * i)));
 }
 
-inline std::vector<uint8_t> canonical_stored_bytes(const std::vector<Stroke>& live) {
+// `linear`: colour encoding 1, whose records carry the low bytes of each code (SPEC.md 6).
+inline std::vector<uint8_t> canonical_stored_bytes(const std::vector<Stroke>& live, bool linear = false) {
     std::vector<uint8_t> b;
     put32(b, uint32_t(live.size()));
-    auto rgba = [&](const Rgba8& c) { b.push_back(c.r); b.push_back(c.g); b.push_back(c.b); b.push_back(c.a); };
+    auto rgba = [&](const Rgba8& c) {
+        b.push_back(c.r); b.push_back(c.g); b.push_back(c.b); b.push_back(c.a);
+        if (linear) { b.push_back(c.r_lo); b.push_back(c.g_lo); b.push_back(c.b_lo); }
+    };
     for (const auto& s : live) {
         b.push_back(uint8_t(s.kind));
         if (s.kind == StrokeKind::Stamp) {
@@ -42,6 +46,16 @@ inline std::vector<uint8_t> canonical_stored_bytes(const std::vector<Stroke>& li
             for (const auto& p : s.curve.points) { put32(b, uint32_t(p.x)); put32(b, uint32_t(p.y)); put32(b, p.width); }
         }
     }
+    return b;
+}
+
+// The rendered frame as SPEC.md 9.4 hashes it: the colour plane (encoding 1: each code as a
+// little-endian u16), then the alpha plane of an alpha canvas.
+template <class CanvasT>
+inline std::vector<uint8_t> render_bytes(const CanvasT& c) {
+    std::vector<uint8_t> b(c.rgb.begin(), c.rgb.end());
+    for (uint16_t v : c.rgb16) { b.push_back(uint8_t(v)); b.push_back(uint8_t(v >> 8)); }
+    b.insert(b.end(), c.alpha.begin(), c.alpha.end());
     return b;
 }
 

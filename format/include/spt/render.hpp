@@ -11,12 +11,22 @@
 
 namespace spt {
 
+// A rendered frame. Which planes it has follows the header (SPEC.md 8): colour encoding 0 has
+// `rgb`, encoding 1 `rgb16`; an alpha canvas also has `alpha`, and its colour planes are then
+// premultiplied by it. Rows are top row first, pixels interleaved R, G, B.
 struct Canvas {
     uint32_t width = 0, height = 0;
-    std::vector<uint8_t> rgb;  // width * height * 3, row-major, top row first
+    std::vector<uint8_t> rgb;     // encoding 0: width * height * 3 sRGB-encoded values
+    std::vector<uint16_t> rgb16;  // encoding 1: width * height * 3 half-float codes, scene-linear
+    std::vector<uint8_t> alpha;   // alpha canvases: width * height, 0 transparent .. 255 opaque
     Canvas() = default;
     Canvas(uint32_t w, uint32_t h, Rgb8 fill = {255, 255, 255});
+    // A canvas with the planes `h` defines, holding its starting canvas.
+    explicit Canvas(const Header& h) { reset(h); }
     void fill(Rgb8 c);
+    // Sizes the planes for `h` and clears them to its starting canvas: the background, or fully
+    // transparent (all 0) on an alpha canvas. Planes the header does not use are emptied.
+    void reset(const Header& h);
     uint8_t* row(uint32_t y) { return rgb.data() + size_t(y) * width * 3; }
     const uint8_t* row(uint32_t y) const { return rgb.data() + size_t(y) * width * 3; }
 };

@@ -94,6 +94,7 @@
 // ---- example end
 #pragma once
 
+#include "spt/color.hpp"
 #include "spt/coding.hpp"
 #include "spt/limits.hpp"
 #include "spt/reader.hpp"

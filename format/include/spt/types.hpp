@@ -18,10 +18,25 @@ struct Rgb8 {
     friend bool operator==(const Rgb8&, const Rgb8&) = default;
 };
 
+// A stroke's colour and opacity `a`. In colour encoding 0 the channels are the 8-bit sRGB values
+// r, g, b and the *_lo bytes are 0. In colour encoding 1 (scene-linear, format 1.3) each channel
+// is a 16-bit half-float code, `(r << 8) | r_lo` (see code16() and SPEC.md 8.6); `a` stays 8-bit.
 struct Rgba8 {
     uint8_t r = 0, g = 0, b = 0, a = 255;
+    uint8_t r_lo = 0, g_lo = 0, b_lo = 0;
     friend bool operator==(const Rgba8&, const Rgba8&) = default;
 };
+
+// The 16-bit code of channel `ch` (0 R, 1 G, 2 B) of a colour in encoding 1.
+inline uint16_t code16(const Rgba8& c, int ch) {
+    return ch == 0 ? uint16_t(c.r << 8 | c.r_lo) : ch == 1 ? uint16_t(c.g << 8 | c.g_lo) : uint16_t(c.b << 8 | c.b_lo);
+}
+inline void set_code16(Rgba8& c, int ch, uint16_t v) {
+    const auto hi = uint8_t(v >> 8), lo = uint8_t(v & 255);
+    if (ch == 0) { c.r = hi; c.r_lo = lo; } else if (ch == 1) { c.g = hi; c.g_lo = lo; } else { c.b = hi; c.b_lo = lo; }
+}
+// The largest colour code of encoding 1: the largest finite half float, 65504.
+constexpr uint16_t kMaxHalfCode = 0x7BFF;
 
 // A stroke set: the size in pixels a stamp stroke of this set covers (before rotation).
 struct StrokeSet {
@@ -202,7 +217,15 @@ struct Rational {
     friend bool operator==(const Rational&, const Rational&) = default;
 };
 
-enum class ColorEncoding : uint8_t { Srgb8 = 0 };
+// How colour values are coded (HEAD color_encoding, SPEC.md 3.1 and 8.6).
+enum class ColorEncoding : uint8_t {
+    Srgb8 = 0,       // 8-bit sRGB-encoded values, blended as they are
+    LinearHalf = 1,  // scene-linear light, 16-bit half-float codes, blended in linear (format 1.3)
+};
+// "srgb8", "linear-half"; "unknown" for any other value.
+const char* color_encoding_name(ColorEncoding e);
+// First format minor version with alpha canvases and colour encoding 1.
+constexpr uint16_t kAlphaLinearMinorVersion = 3;
 
 constexpr uint32_t kUnknownFrameCount = 0xFFFFFFFFu;
 
@@ -213,7 +236,15 @@ struct Header {
     Rational fps;
     uint32_t frame_count = kUnknownFrameCount;  // may be unknown while streaming
     ColorEncoding color = ColorEncoding::Srgb8;
+    // HEAD flags bit 0 (format 1.3): the canvas has an alpha channel. It then starts fully
+    // transparent, colour channels premultiplied, and `background` is only the colour a viewer
+    // shows behind it (SPEC.md 8).
+    bool alpha = false;
     Rgb8 background{255, 255, 255};
+    // Colour encoding 1: the low bytes of the background's 16-bit codes (0 otherwise).
+    Rgb8 background_lo{0, 0, 0};
+    // True when this header needs nothing of format 1.3: 8-bit sRGB, no alpha.
+    bool plain_color() const { return color == ColorEncoding::Srgb8 && !alpha; }
     std::vector<StrokeSet> sets;             // coarse to fine
     std::vector<Orientation> orientations;   // default: 8 entries, k*pi/8
     friend bool operator==(const Header&, const Header&) = default;
