@@ -41,6 +41,13 @@ struct PaintCommandOptions {
     bool target_bytes_per_second = false; // N/s: per second of a clip
     size_t cli_roi_count = 0;             // rois[0..cli_roi_count) came from --roi (all frames)
 
+    // Compositing-grade output (format 1.3, issue 17).
+    std::string color_encoding = "auto";  // --color-encoding auto|srgb8|linear (auto: linear for float input)
+    std::string alpha = "auto";           // --alpha auto|on|off (auto: on when the input has alpha)
+    std::string colorspace;               // --colorspace NAME: the input's colour space (io::SceneReadOptions)
+    std::string ocio_config;              // --ocio FILE: an OCIO config (default $OCIO)
+    std::string layer;                    // --layer NAME: the EXR layer to paint
+
     // Sequences and video (ignored for a still image).
     std::string frames;                   // --frames A-B
     std::string fps;                      // --fps 24 | 30000/1001
