@@ -329,6 +329,27 @@ TEST(HostileCli, AnUnwritablePreviewIsRefusedBeforeTheSptIsWritten) {
     EXPECT_EQ(names(d), Names{});
 }
 
+// spt paint --target-bytes coded its trials to the fixed name OUT.rate-search: two paints into
+// one folder, or a user's file of that name, collided, and the user's file was deleted. The
+// trials now go to an unnamed file: whatever has that name is untouched, nothing else appears.
+TEST(HostileCli, ATargetSizePaintLeavesOtherNamesAlone) {
+    for (const char* style : {"painterly", "cartoon"}) {
+        TempDir d;
+        { std::ofstream(d.file("o.spt.rate-search")) << "mine"; }
+        fs::create_symlink("victim.txt", d.path / "o.spt.partial");
+        auto r = run_spt(d, {"paint", input("good.png"), "-o", d.file("o.spt"), "--style", style, "--target-bytes", "700"});
+        ASSERT_EQ(r.code, 0) << style << ": " << r.err;
+        EXPECT_EQ(slurp(d.file("o.spt.rate-search")), "mine") << style;
+        EXPECT_EQ(names(d), (Names{"o.spt", "o.spt.partial", "o.spt.rate-search"})) << style;
+        EXPECT_FALSE(fs::exists(d.path / "victim.txt")) << style;
+        // The trials were measured: the still painter's search reports the size of the best
+        // trial, which the final paint (the same lambda) reproduces byte for byte.
+        if (style == std::string("painterly"))
+            EXPECT_HAS(r.err, "gives " + std::to_string(fs::file_size(d.path / "o.spt")) + " bytes");
+        EXPECT_EQ(run_spt(d, {"verify", d.file("o.spt")}).code, 0) << style;
+    }
+}
+
 // ---- signals ----
 
 // Killed mid-paint (SIGKILL cannot be caught; SIGINT's default ends the process): the output
@@ -344,4 +365,13 @@ TEST(HostileCli, AKilledPaintLeavesNothing) {
         EXPECT_TRUE(signalled) << "signal " << sig << ": the paint ended by itself (exit " << code << ")";
         EXPECT_EQ(names(d), Names{"noise.png"}) << "signal " << sig;
     }
+    // Killed in the trials of a rate search: they had no name either.
+    TempDir d;
+    const std::string img = noise_image(d);
+    int code = 0;
+    EXPECT_TRUE(run_and_signal({"paint", img, "-o", d.file("o.spt"), "--max-strokes", "16000000", "--target-bytes", "4000000",
+                                "--threads", "1"},
+                               SIGKILL, std::chrono::milliseconds(1000), &code))
+        << "the paint ended by itself (exit " << code << ")";
+    EXPECT_EQ(names(d), Names{"noise.png"});
 }
