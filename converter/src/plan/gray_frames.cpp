@@ -1,6 +1,8 @@
 #include "plan/gray_frames.hpp"
 
+#include <algorithm>
 #include <map>
+#include <thread>
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
@@ -8,6 +10,7 @@
 
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
+#include "plan/ordered_prefetch.hpp"
 #include "video/frame_source.hpp"
 
 namespace spt::plan {
@@ -61,31 +64,56 @@ bool read_gray_bytes(const std::string& path, cv::Mat& gray, std::vector<uint8_t
     return true;
 }
 
+// One frame of a sequence as gray, or what is wrong with it (a function of the file alone, so
+// frames can be read on several threads).
+struct GrayFile {
+    cv::Mat gray;
+    std::string problem;
+};
+
+GrayFile read_gray_file(const std::string& pattern, long number, const std::string* path, std::vector<uint8_t>& buf) {
+    GrayFile g;
+    if (!path) {
+        g.problem = io::format_frame(pattern, number) + ": frame " + std::to_string(number) + " is missing from the sequence";
+        return g;
+    }
+    try {
+        if (read_gray_bytes(*path, g.gray, buf)) return g;
+        // The painter's reader (video/frame_source.cpp): floats, alpha, 16-bit; its messages.
+        Result<io::Image> img = io::read_image(*path);
+        if (!img) {
+            g.problem = img.error().message;
+            if (g.problem.find(*path) == std::string::npos) g.problem = *path + ": " + g.problem;
+        } else {
+            cv::Mat rgb(int(img->height), int(img->width), CV_8UC3, img->rgb.data());
+            cv::cvtColor(rgb, g.gray, cv::COLOR_RGB2GRAY);
+        }
+    } catch (const std::exception& e) {
+        g.gray.release();
+        g.problem = *path + ": " + e.what();
+    }
+    return g;
+}
+
 class SequenceGray final : public GrayFrames {
 public:
-    SequenceGray(std::string pattern, std::vector<long> numbers, std::map<long, std::string> files, bool skip)
-        : pattern_(std::move(pattern)), numbers_(std::move(numbers)), files_(std::move(files)), skip_(skip) {}
+    SequenceGray(std::string pattern, std::vector<long> numbers, std::map<long, std::string> files, bool skip, int threads)
+        : pattern_(std::move(pattern)), numbers_(std::move(numbers)), files_(std::move(files)), skip_(skip) {
+        // Decoding is nearly all of the pass; frames decode on every thread, a few ahead.
+        if (threads > 1 && numbers_.size() > 1)
+            ahead_ = std::make_unique<Prefetch>(numbers_.size(), threads, size_t(2 * threads),
+                                                [this](size_t i, std::vector<uint8_t>& buf) { return read(i, buf); });
+    }
 
     Result<bool> next(long& number, cv::Mat& gray) override {
         if (pos_ >= numbers_.size()) return false;
-        number = numbers_[pos_++];
-        auto f = files_.find(number);
-        std::string problem;
-        if (f == files_.end()) {
-            problem = io::format_frame(pattern_, number) + ": frame " + std::to_string(number) + " is missing from the sequence";
-        } else if (!read_gray_bytes(f->second, gray, buf_)) {
-            // The painter's reader (video/frame_source.cpp): floats, alpha, 16-bit; its messages.
-            Result<io::Image> img = io::read_image(f->second);
-            if (!img) {
-                problem = img.error().message;
-                if (problem.find(f->second) == std::string::npos) problem = f->second + ": " + problem;
-            } else {
-                cv::Mat rgb(int(img->height), int(img->width), CV_8UC3, img->rgb.data());
-                cv::cvtColor(rgb, gray, cv::COLOR_RGB2GRAY);
-            }
-        }
+        const size_t i = pos_++;
+        number = numbers_[i];
+        GrayFile g = ahead_ ? ahead_->take() : read(i, buf_);
+        std::string problem = std::move(g.problem);
+        if (problem.empty()) gray = std::move(g.gray);
         if (problem.empty() && !prev_.empty() && gray.size() != prev_.size())
-            problem = f->second + ": frame " + std::to_string(number) + " is " + std::to_string(gray.cols) + "x" +
+            problem = files_.at(number) + ": frame " + std::to_string(number) + " is " + std::to_string(gray.cols) + "x" +
                       std::to_string(gray.rows) + ", the sequence is " + std::to_string(prev_.cols) + "x" +
                       std::to_string(prev_.rows);
         if (!problem.empty()) {
@@ -103,6 +131,13 @@ public:
     std::string describe() const override { return pattern_; }
 
 private:
+    using Prefetch = OrderedPrefetch<GrayFile, std::vector<uint8_t>>;
+
+    GrayFile read(size_t i, std::vector<uint8_t>& buf) const {
+        auto f = files_.find(numbers_[i]);
+        return read_gray_file(pattern_, numbers_[i], f == files_.end() ? nullptr : &f->second, buf);
+    }
+
     std::string pattern_;
     std::vector<long> numbers_;
     std::map<long, std::string> files_;
@@ -110,12 +145,14 @@ private:
     size_t pos_ = 0;
     cv::Mat prev_;
     std::vector<uint8_t> buf_;
+    std::unique_ptr<Prefetch> ahead_;  // last: its threads stop before the members they read go
 };
 
 }  // namespace
 
 Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, const std::string& frames,
-                                                     bool skip_bad_frames) {
+                                                     bool skip_bad_frames, int threads) {
+    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
     if (io::is_sequence_pattern(input) && !io::is_video_file(input)) {
         Result<io::FrameRange> range = io::parse_frame_range(frames);
         if (!range) return range.error();
@@ -132,7 +169,7 @@ Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, c
         }
         std::vector<long> numbers = range->frames_within(first, last, 10'000'000);
         return std::unique_ptr<GrayFrames>(
-            std::make_unique<SequenceGray>(input, std::move(numbers), std::move(by_number), skip_bad_frames));
+            std::make_unique<SequenceGray>(input, std::move(numbers), std::move(by_number), skip_bad_frames, threads));
     }
     Result<std::unique_ptr<video::FrameSource>> src = video::open_source(input, frames, skip_bad_frames);
     if (!src) return src.error();

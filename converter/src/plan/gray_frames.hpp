@@ -25,7 +25,9 @@ public:
     virtual std::string describe() const = 0;
 };
 
+// `threads`: files of a sequence decode on this many threads (0: every core), in order; the
+// frames are the same for any count.
 Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, const std::string& frames,
-                                                     bool skip_bad_frames);
+                                                     bool skip_bad_frames, int threads = 1);
 
 }  // namespace spt::plan
