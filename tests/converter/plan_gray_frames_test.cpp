@@ -1,7 +1,7 @@
 // spt plan's cut pass reads 8-bit sequences as bytes (plan/gray_frames.hpp): its gray frames
 // must be exactly those of the painter's reader (video::FrameSource, then RGB -> gray), or the
 // plan would place cuts the painter's detector does not see. Also for the files it leaves to
-// the painter's reader (EXR), and for missing frames.
+// the painter's reader (EXR), for video files, and for missing frames.
 #include "converter/cli_test_util.hpp"
 
 #include <opencv2/imgproc.hpp>
@@ -14,10 +14,10 @@ namespace {
 
 using namespace spt_test;
 
-void expect_same_gray(const std::string& pattern, int frames, int threads) {
-    auto fast = spt::plan::open_gray_frames(pattern, "", false, threads);
+void expect_same_gray(const std::string& pattern, int frames, int threads, const std::string& range = "") {
+    auto fast = spt::plan::open_gray_frames(pattern, range, false, threads);
     ASSERT_TRUE(fast.ok()) << fast.error().message;
-    auto slow = spt::video::open_source(pattern, "", false);
+    auto slow = spt::video::open_source(pattern, range, false);
     ASSERT_TRUE(slow.ok()) << slow.error().message;
     int n = 0;
     for (;; ++n) {
@@ -53,6 +53,8 @@ TEST(PlanGrayFrames, EightBitSequencesReadAsThePainterReadsThem) {
         expect_same_gray(d.file("p.%02d.png"), 3, threads);  // 8-bit RGB: the byte path
         expect_same_gray(media + "/exr/earth/earth.####.exr", 48, threads);  // half float: the painter's path
     }
+    expect_same_gray(media + "/video/city.mpg", 190, 1);  // a video: BGR straight to gray
+    expect_same_gray(media + "/video/city.mpg", 16, 1, "110-125");
     // A missing frame is an error naming it, or the previous frame with --skip-bad-frames.
     fs::remove(d.file("p.42.png"));
     for (int threads : {1, 2}) {

@@ -1,17 +1,20 @@
 #include "plan/gray_frames.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <thread>
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
 #include "plan/ordered_prefetch.hpp"
 #include "video/frame_source.hpp"
+#include "video/video_paint.hpp"
 
 namespace spt::plan {
 
@@ -37,6 +40,72 @@ public:
 private:
     std::unique_ptr<video::FrameSource> src_;
     video::SourceFrame frame_;
+};
+
+// A video file straight to gray: the painter's VideoFileSource (video/frame_source.cpp) reads
+// each frame to BGR, swaps it to RGB, copies it out, and the pass made gray of that; here BGR
+// goes to gray directly into buffers kept from frame to frame (fresh 6 MB buffers at 1080p cost
+// page faults, a quarter of the pass). The same gray: OpenCV weighs the channels in the same
+// fixed point whichever order they come in (tested against the painter's reader).
+class VideoGray final : public GrayFrames {
+public:
+    VideoGray(std::string path, io::FrameRange range) : path_(std::move(path)), range_(std::move(range)) {}
+
+    Status open() {
+        if (!cap_.open(path_)) return make_error(Code::IoError, path_ + ": OpenCV cannot open this video file");
+        fps_ = cap_.get(cv::CAP_PROP_FPS);
+        const double n = cap_.get(cv::CAP_PROP_FRAME_COUNT);
+        total_ = n > 0 && n < 1e9 ? uint64_t(n) : 0;
+        if (!range_.empty()) {
+            last_wanted_ = range_.spans.front().second;
+            for (const auto& s : range_.spans) last_wanted_ = std::max(last_wanted_, s.second);
+        }
+        return {};
+    }
+
+    Result<bool> next(long& number, cv::Mat& gray) override {
+        for (;;) {
+            if (!range_.empty() && pos_ > last_wanted_) return false;
+            if (!range_.empty() && !range_.contains(pos_)) {
+                if (!cap_.grab()) return false;  // skipped frames are not converted
+                ++pos_;
+                continue;
+            }
+            if (!cap_.read(bgr_) || bgr_.empty()) return false;
+            break;
+        }
+        number = pos_++;
+        if (bgr_.depth() != CV_8U) bgr_.convertTo(bgr_, CV_8U);
+        if (bgr_.channels() == 1) bgr_.copyTo(gray_);
+        else cv::cvtColor(bgr_, gray_, bgr_.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+        if (width_ == 0) { width_ = gray_.cols; height_ = gray_.rows; }
+        if (gray_.cols != width_ || gray_.rows != height_)
+            return make_error(Code::Corrupt, path_ + ": frame " + std::to_string(number) + " changes size");
+        gray = gray_;  // shares the buffer: the caller reads it before the next call
+        return true;
+    }
+    bool has_fps() const override { return fps_ > 0 && std::isfinite(fps_); }
+    Rational fps() const override { return video::fps_from_double(fps_); }
+    uint64_t expected_frames() const override {
+        if (range_.empty()) return total_;
+        uint64_t n = 0;
+        for (const auto& s : range_.spans) {
+            const long hi = total_ ? std::min<long>(s.second, long(total_) - 1) : s.second;
+            if (hi >= s.first) n += uint64_t(hi - s.first + 1);
+        }
+        return n;
+    }
+    std::string describe() const override { return path_; }
+
+private:
+    std::string path_;
+    io::FrameRange range_;
+    cv::VideoCapture cap_;
+    cv::Mat bgr_, gray_;
+    double fps_ = 0;
+    uint64_t total_ = 0;
+    long pos_ = 0, last_wanted_ = 0;
+    int width_ = 0, height_ = 0;
 };
 
 // Reads an 8-bit, 1- or 3-channel file without alpha as gray; false (nothing reported) for any
@@ -170,6 +239,13 @@ Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, c
         std::vector<long> numbers = range->frames_within(first, last, 10'000'000);
         return std::unique_ptr<GrayFrames>(
             std::make_unique<SequenceGray>(input, std::move(numbers), std::move(by_number), skip_bad_frames, threads));
+    }
+    if (io::is_video_file(input)) {
+        Result<io::FrameRange> range = io::parse_frame_range(frames);
+        if (!range) return range.error();
+        auto v = std::make_unique<VideoGray>(input, *range);
+        if (Status st = v->open(); !st) return st.error();
+        return std::unique_ptr<GrayFrames>(std::move(v));
     }
     Result<std::unique_ptr<video::FrameSource>> src = video::open_source(input, frames, skip_bad_frames);
     if (!src) return src.error();
