@@ -4,6 +4,9 @@
 // the painter's reader (EXR), for video files, and for missing frames.
 #include "converter/cli_test_util.hpp"
 
+#include <algorithm>
+
+#include <OpenImageIO/imageio.h>
 #include <opencv2/imgproc.hpp>
 
 #include "io/image_io.hpp"
@@ -52,6 +55,22 @@ TEST(PlanGrayFrames, EightBitSequencesReadAsThePainterReadsThem) {
     for (int threads : {1, 2, 3}) {  // decoded ahead on several threads: the same frames, in order
         expect_same_gray(d.file("p.%02d.png"), 3, threads);  // 8-bit RGB: the byte path
         expect_same_gray(media + "/exr/earth/earth.####.exr", 48, threads);  // half float: the painter's path
+    }
+    // Half floats map through read_image's table: every half value in every channel, 1 and 3
+    // channels (the earth frames above are half too).
+    for (int nch : {1, 3}) {
+        std::vector<uint16_t> px(65536 * size_t(nch));
+        for (size_t i = 0; i < px.size(); ++i) px[i] = uint16_t(i * 40503u + uint32_t(nch));
+        for (int f = 1; f <= 2; ++f) {
+            const std::string path = d.file("h" + std::to_string(nch) + "." + std::to_string(f) + ".exr");
+            auto out = OIIO::ImageOutput::create(path);
+            ASSERT_TRUE(out);
+            ASSERT_TRUE(out->open(path, OIIO::ImageSpec(256, 256, nch, OIIO::TypeDesc::HALF)));
+            ASSERT_TRUE(out->write_image(OIIO::TypeDesc::HALF, px.data()));
+            ASSERT_TRUE(out->close());
+            std::reverse(px.begin(), px.end());
+        }
+        expect_same_gray(d.file("h" + std::to_string(nch) + ".@.exr"), 2, 2);
     }
     expect_same_gray(media + "/video/city.mpg", 190, 1);  // a video: BGR straight to gray
     expect_same_gray(media + "/video/city.mpg", 16, 1, "110-125");

@@ -1,6 +1,7 @@
 #include "plan/gray_frames.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <thread>
@@ -108,9 +109,16 @@ private:
     int width_ = 0, height_ = 0;
 };
 
-// Reads an 8-bit, 1- or 3-channel file without alpha as gray; false (nothing reported) for any
-// other file, which the caller then reads the painter's way.
-bool read_gray_bytes(const std::string& path, cv::Mat& gray, std::vector<uint8_t>& buf) {
+// A decoding thread's buffers, kept from file to file.
+struct Scratch {
+    std::vector<uint8_t> pixels, rgb;
+};
+
+// Reads a 1- or 3-channel file without alpha whose samples are all 8-bit or all half float as
+// gray, giving read_image's bytes: 8-bit samples are those bytes, and half samples map through
+// read_image's own table (io::half_to_srgb8). False (nothing reported) for any other file,
+// which the caller then reads the painter's way.
+bool read_gray_direct(const std::string& path, cv::Mat& gray, Scratch& sc) {
     OIIO::ImageSpec hint;
     hint.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(path, &hint);
@@ -119,15 +127,27 @@ bool read_gray_bytes(const std::string& path, cv::Mat& gray, std::vector<uint8_t
         return false;
     }
     const OIIO::ImageSpec& s = in->spec();
-    if (s.format != OIIO::TypeDesc::UINT8 || (s.nchannels != 1 && s.nchannels != 3) || s.alpha_channel >= 0 ||
-        s.depth > 1 || s.width <= 0 || s.height <= 0 || int64_t(s.width) * s.height > (int64_t(1) << 28))
+    const bool byte = s.format == OIIO::TypeDesc::UINT8;
+    bool half = s.format == OIIO::TypeDesc::HALF && io::half_to_srgb8();
+    for (const OIIO::TypeDesc& t : s.channelformats) half = half && t == OIIO::TypeDesc::HALF;
+    if ((!byte && !half) || (s.nchannels != 1 && s.nchannels != 3) || s.alpha_channel >= 0 || s.deep || s.depth > 1 ||
+        s.width <= 0 || s.height <= 0 || int64_t(s.width) * s.height > (int64_t(1) << 28))
         return false;
-    buf.resize(size_t(s.width) * size_t(s.height) * size_t(s.nchannels));
-    if (!in->read_image(0, 0, 0, s.nchannels, OIIO::TypeDesc::UINT8, buf.data())) {
+    const size_t samples = size_t(s.width) * size_t(s.height) * size_t(s.nchannels);
+    sc.pixels.resize(samples * (half ? 2 : 1));
+    if (!in->read_image(0, 0, 0, s.nchannels, half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8, sc.pixels.data())) {
         (void)in->geterror();
         return false;
     }
-    cv::Mat m(s.height, s.width, s.nchannels == 3 ? CV_8UC3 : CV_8UC1, buf.data());
+    uint8_t* bytes = sc.pixels.data();
+    if (half) {
+        const std::array<uint8_t, 65536>& table = *io::half_to_srgb8();
+        const auto* h = reinterpret_cast<const uint16_t*>(sc.pixels.data());
+        sc.rgb.resize(samples);
+        for (size_t i = 0; i < samples; ++i) sc.rgb[i] = table[h[i]];
+        bytes = sc.rgb.data();
+    }
+    cv::Mat m(s.height, s.width, s.nchannels == 3 ? CV_8UC3 : CV_8UC1, bytes);
     if (s.nchannels == 3) cv::cvtColor(m, gray, cv::COLOR_RGB2GRAY);
     else m.copyTo(gray);
     return true;
@@ -140,14 +160,14 @@ struct GrayFile {
     std::string problem;
 };
 
-GrayFile read_gray_file(const std::string& pattern, long number, const std::string* path, std::vector<uint8_t>& buf) {
+GrayFile read_gray_file(const std::string& pattern, long number, const std::string* path, Scratch& sc) {
     GrayFile g;
     if (!path) {
         g.problem = io::format_frame(pattern, number) + ": frame " + std::to_string(number) + " is missing from the sequence";
         return g;
     }
     try {
-        if (read_gray_bytes(*path, g.gray, buf)) return g;
+        if (read_gray_direct(*path, g.gray, sc)) return g;
         // The painter's reader (video/frame_source.cpp): floats, alpha, 16-bit; its messages.
         Result<io::Image> img = io::read_image(*path);
         if (!img) {
@@ -171,14 +191,14 @@ public:
         // Decoding is nearly all of the pass; frames decode on every thread, a few ahead.
         if (threads > 1 && numbers_.size() > 1)
             ahead_ = std::make_unique<Prefetch>(numbers_.size(), threads, size_t(2 * threads),
-                                                [this](size_t i, std::vector<uint8_t>& buf) { return read(i, buf); });
+                                                [this](size_t i, Scratch& sc) { return read(i, sc); });
     }
 
     Result<bool> next(long& number, cv::Mat& gray) override {
         if (pos_ >= numbers_.size()) return false;
         const size_t i = pos_++;
         number = numbers_[i];
-        GrayFile g = ahead_ ? ahead_->take() : read(i, buf_);
+        GrayFile g = ahead_ ? ahead_->take() : read(i, scratch_);
         std::string problem = std::move(g.problem);
         if (problem.empty()) gray = std::move(g.gray);
         if (problem.empty() && !prev_.empty() && gray.size() != prev_.size())
@@ -200,11 +220,11 @@ public:
     std::string describe() const override { return pattern_; }
 
 private:
-    using Prefetch = OrderedPrefetch<GrayFile, std::vector<uint8_t>>;
+    using Prefetch = OrderedPrefetch<GrayFile, Scratch>;
 
-    GrayFile read(size_t i, std::vector<uint8_t>& buf) const {
+    GrayFile read(size_t i, Scratch& sc) const {
         auto f = files_.find(numbers_[i]);
-        return read_gray_file(pattern_, numbers_[i], f == files_.end() ? nullptr : &f->second, buf);
+        return read_gray_file(pattern_, numbers_[i], f == files_.end() ? nullptr : &f->second, sc);
     }
 
     std::string pattern_;
@@ -213,7 +233,7 @@ private:
     bool skip_;
     size_t pos_ = 0;
     cv::Mat prev_;
-    std::vector<uint8_t> buf_;
+    Scratch scratch_;
     std::unique_ptr<Prefetch> ahead_;  // last: its threads stop before the members they read go
 };
 
