@@ -128,7 +128,9 @@ std::string known_colorspaces_text(const ColorSetup& cs, size_t max) {
 Result<std::string> find_colorspace(const ColorSetup& cs, const std::string& name) {
     auto unknown = [&]() -> Error {
         return make_error(Code::InvalidArgument, "unknown colour space '" + name + "' in " + cs.source +
-                                                     " (known: " + known_colorspaces_text(cs) + ")");
+                                                     " (known: " + known_colorspaces_text(cs) + ")" +
+                                                     (cs.builtin ? "; other spaces (ACEScg, ...) need an OCIO config: "
+                                                                   "--ocio FILE or $OCIO" : ""));
     };
     if (name.empty()) return unknown();
     if (std::string s = space_named(cs, name); !s.empty()) return s;
