@@ -153,30 +153,33 @@ TEST(SceneImage, OrbitKeepsPremultipliedAlphaAndHdrExactly) {
     EXPECT_GT(max_color, 10.f) << "the glowing sphere's HDR values must survive";
 }
 
-TEST(SceneImage, PngStraightAlphaIsLinearizedThenPremultiplied) {
+TEST(SceneImage, PngAndTiffStraightAlphaIsLinearizedThenPremultiplied) {
     TempDir d;
-    const std::string path = d.file("straight.png");
-    OIIO::ImageSpec s(3, 1, 4, OIIO::TypeDesc::UINT8);
-    s.alpha_channel = 3;
-    s.attribute("oiio:UnassociatedAlpha", 1);  // the values are PNG's own: straight
-    // (255,128,0) at alpha 128; a colour under alpha 0; an opaque mid grey.
-    write_file(path, s, {1.f, 128 / 255.f, 0.f, 128 / 255.f, 1.f, 1.f, 1.f, 0.f, 0.5f, 0.5f, 0.5f, 1.f});
-    auto r = read_scene_image(path);
-    ASSERT_TRUE(r.ok()) << r.error().message;
-    EXPECT_TRUE(r->has_alpha);
-    EXPECT_FALSE(r->is_float);
-    EXPECT_EQ(r->colorspace, "sRGB");
-    const float a = 128 / 255.f;
-    const float* p0 = px(*r, 0, 0);
-    EXPECT_NEAR(p0[0], 1.f * a, 2e-3);
-    EXPECT_NEAR(p0[1], srgb_to_linear(128 / 255.f) * a, 2e-3);  // 0.2159 * 0.502, not 0.502 * 0.502
-    EXPECT_NEAR(p0[2], 0.f, 1e-6);
-    EXPECT_NEAR(p0[3], a, 1e-6);
-    const float* p1 = px(*r, 1, 0);
-    for (int k = 0; k < 4; ++k) EXPECT_EQ(p1[k], 0.f) << k;
-    const float* p2 = px(*r, 2, 0);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(p2[k], srgb_to_linear(0.5f), 2e-3);
-    EXPECT_EQ(p2[3], 1.f);
+    for (const char* name : {"straight.png", "straight16.tif"}) {
+        SCOPED_TRACE(name);
+        const std::string path = d.file(name);
+        OIIO::ImageSpec s(3, 1, 4, std::string(name).find(".tif") != std::string::npos ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+        s.alpha_channel = 3;
+        s.attribute("oiio:UnassociatedAlpha", 1);  // the values are PNG's own: straight
+        // (255,128,0) at alpha 128; a colour under alpha 0; an opaque mid grey.
+        write_file(path, s, {1.f, 128 / 255.f, 0.f, 128 / 255.f, 1.f, 1.f, 1.f, 0.f, 0.5f, 0.5f, 0.5f, 1.f});
+        auto r = read_scene_image(path);
+        ASSERT_TRUE(r.ok()) << r.error().message;
+        EXPECT_TRUE(r->has_alpha);
+        EXPECT_FALSE(r->is_float);
+        EXPECT_EQ(r->colorspace, "sRGB");
+        const float a = 128 / 255.f;
+        const float* p0 = px(*r, 0, 0);
+        EXPECT_NEAR(p0[0], 1.f * a, 2e-3);
+        EXPECT_NEAR(p0[1], srgb_to_linear(128 / 255.f) * a, 2e-3);  // 0.2159 * 0.502, not 0.502 * 0.502
+        EXPECT_NEAR(p0[2], 0.f, 1e-6);
+        EXPECT_NEAR(p0[3], a, 1e-6);
+        const float* p1 = px(*r, 1, 0);
+        for (int k = 0; k < 4; ++k) EXPECT_EQ(p1[k], 0.f) << k;
+        const float* p2 = px(*r, 2, 0);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p2[k], srgb_to_linear(0.5f), 2e-3);
+        EXPECT_EQ(p2[3], 1.f);
+    }
 }
 
 TEST(SceneImage, NoAlphaMeansOpaqueAndSixteenBitIsSrgb) {
