@@ -103,8 +103,7 @@ private:
 
 int cmd_render(int argc, char** argv) {
     Args args("render", "render a .spt file to images (PNG, EXR, TIFF, JPEG), a sequence or a video",
-              "spt render FILE.spt -o OUT [--frames RANGE | --frame N] [--start N] [--background COLOUR] "
-              "[--depth 8|16] [--view VIEW [--display DISPLAY] [--ocio FILE]] [--progress MODE]");
+              "spt render FILE.spt -o OUT [--frames RANGE | --frame N] [--start N] [--background C] [...]");
     args.positional("FILE.spt", "the file to render")
         .option("output", "OUT",
                 "an image (.png .exr .tif .jpg ...: one frame), a sequence pattern (out.####.png, "
