@@ -179,6 +179,12 @@ TEST(RenderAlpha, BackgroundFlattensAndJpegFlattensOverTheHeaderBackground) {
         EXPECT_EQ(im.px[0], 255);  // a transparent corner is the background
         EXPECT_EQ(im.px[2], 128);
     }
+    // A colour name is the same colour.
+    ASSERT_EQ(run_spt(d, {"render", in, "-o", d.file("w1.png"), "--background", "white"}).code, 0);
+    ASSERT_EQ(run_spt(d, {"render", in, "-o", d.file("w2.png"), "--background", "255,255,255"}).code, 0);
+    EXPECT_EQ(spt_test::slurp(d.file("w1.png")), spt_test::slurp(d.file("w2.png")));
+    EXPECT_EQ(run_spt(d, {"render", in, "-o", d.file("w3.png"), "--background", "1,2"}).code, 2);
+    EXPECT_EQ(run_spt(d, {"render", in, "-o", d.file("w3.png"), "--background", "nocolour"}).code, 2);
     // The EXR flattened: three channels, transparent pixels are the linear background.
     ASSERT_EQ(run_spt(d, {"render", in, "-o", d.file("f.exr"), "--background", "255,0,128"}).code, 0);
     const Img ex = read(d.file("f.exr"), OIIO::TypeDesc::HALF);

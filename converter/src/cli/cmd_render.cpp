@@ -16,6 +16,7 @@
 #include "io/sequence.hpp"
 #include "io/spt_file.hpp"
 #include "spt/concat.hpp"
+#include "spt_import/shapes.hpp"
 #include "spt/spt.hpp"
 
 namespace spt::cli {
@@ -29,8 +30,11 @@ int fail(const std::string& msg) {
     return 1;
 }
 
-// --background: "R,G,B" (0..255, as spt paint's) or a hex colour "RRGGBB" / "#RRGGBB" (as spt import's).
+// --background: "R,G,B" (0..255, as spt paint's), a hex colour "RRGGBB" / "#RRGGBB" (as spt
+// import's) or an SVG colour name ("white", "black", ...: the SVG importer's parser).
 bool parse_colour(std::string s, Rgb8& c) {
+    bool none = false;
+    if (s.find(',') == std::string::npos && s.size() != 6 && import::parse_color(s, c, none) && !none) return true;
     if (!s.empty() && s[0] == '#') s.erase(0, 1);
     if (s.size() == 6 && s.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos) {
         const unsigned long v = std::stoul(s, nullptr, 16);
@@ -115,7 +119,7 @@ int cmd_render(int argc, char** argv) {
         .option("frame", "N", "the frame of a single-image output, by frame number (default: the first)")
         .option("start", "N", "number the output files from N: the file's i-th frame is written as i + N "
                               "(default: the frame numbers, so shot.1001.exr... renders to out.1001.png...)")
-        .option("background", "COLOUR", "flatten an alpha canvas over this sRGB colour, R,G,B (0..255) or RRGGBB, "
+        .option("background", "COLOUR", "flatten an alpha canvas over this sRGB colour: R,G,B (0..255), RRGGBB or a name, "
                                          "for any output (default: PNG, TIFF and EXR keep the alpha; JPEG and videos "
                                          "flatten over the file's background)")
         .option("depth", "BITS", "8 or 16: bits per channel of PNG and TIFF output (default 8)", 0, "8")
@@ -149,7 +153,7 @@ int cmd_render(int argc, char** argv) {
     if (args.has("background")) {
         Rgb8 bg;
         if (!parse_colour(args.get("background"), bg))
-            return args.usage_error("--background: expected R,G,B (0..255) or RRGGBB, got '" + args.get("background") + "'");
+            return args.usage_error("--background: expected R,G,B (0..255), RRGGBB or a colour name, got '" + args.get("background") + "'");
         img.background = bg;
     }
     long depth = 8;
