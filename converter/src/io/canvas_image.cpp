@@ -77,15 +77,19 @@ Status write_canvas(const std::string& path, const Canvas& c, const Header& h, c
         return make_error(Code::InvalidArgument, path + ": the canvas does not have the planes its header defines");
     if (o.depth != 8 && o.depth != 16) return make_error(Code::InvalidArgument, path + ": depth must be 8 or 16");
     const std::string fmt = image_format_name(path);
-    if (fmt.empty()) return write_image(path, c.width, c.height, nullptr);  // its error names the extension
+    if (fmt.empty()) return make_error(Code::InvalidArgument, path + ": no image writer for this extension");
     const bool exr = fmt == "openexr";
     const bool keep_alpha = has_alpha && !o.background && image_supports_alpha(path);
     const bool flatten = has_alpha && !keep_alpha;
     if (flatten && !o.background && note) {
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "%02x%02x%02x", h.background.r, h.background.g, h.background.b);
-        *note = path + ": " + fmt + " has no alpha channel; the canvas is flattened over the file's background" +
-                (linear ? std::string(" colour") : " #" + std::string(hex)) + " (--background to choose)";
+        char bg[96];
+        if (linear)
+            std::snprintf(bg, sizeof bg, "%g, %g, %g linear", double(background_linear(h, 0)), double(background_linear(h, 1)),
+                          double(background_linear(h, 2)));
+        else
+            std::snprintf(bg, sizeof bg, "#%02x%02x%02x", h.background.r, h.background.g, h.background.b);
+        *note = path + ": " + fmt + " has no alpha channel; the canvas is flattened over the file's background " + bg +
+                " (--background to choose)";
     }
     const int nch = keep_alpha ? 4 : 3;
     const int depth = exr ? 0 : o.depth;

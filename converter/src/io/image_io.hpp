@@ -47,6 +47,7 @@ Result<Image> read_image(const std::string& path, const ReadOptions& opts = {});
 // PNG and TIFF are 8-bit, JPEG quality 95. The file is encoded in memory and written through
 // spt::AtomicFile, so a failed or killed write never leaves a partial file.
 Status write_image(const std::string& path, uint32_t width, uint32_t height, const uint8_t* rgb);
+// A plain canvas (8-bit sRGB, no alpha); io::write_canvas (io/canvas_image.hpp) writes any kind.
 inline Status write_image(const std::string& path, const Canvas& c) {
     return write_image(path, c.width, c.height, c.rgb.data());
 }
