@@ -3,8 +3,9 @@
 
 #include <OpenImageIO/color.h>
 
+#include "io/color_config.hpp"
+
 #include <algorithm>
-#include <cstdlib>
 #include <vector>
 
 namespace spt::io {
@@ -13,7 +14,7 @@ namespace {
 
 class OcioView final : public ViewTransform {
 public:
-    std::unique_ptr<OIIO::ColorConfig> config;
+    ColorSetup setup;  // keeps the config the processor belongs to
     OIIO::ColorProcessorHandle proc;
     std::string what;
     void apply(float* rgb, size_t n) const override {
@@ -36,42 +37,32 @@ std::string join(const std::vector<std::string>& v) {
 }  // namespace
 
 Result<std::unique_ptr<ViewTransform>> ViewTransform::open(const ViewSpec& spec) {
-    std::string file = spec.config;
-    if (file.empty())
-        if (const char* e = std::getenv("OCIO")) file = e;
-    if (file.empty())
+    auto cs = color_config(spec.config);  // --ocio, else $OCIO; loaded once, shared (io/color_config)
+    if (!cs) return cs.error();
+    if (cs->builtin)
         return make_error(Code::InvalidArgument, "--view " + spec.view + " needs an OCIO config: give --ocio FILE or set $OCIO");
     auto v = std::make_unique<OcioView>();
-    v->config = std::make_unique<OIIO::ColorConfig>(file);
-    if (v->config->has_error() || v->config->getNumColorSpaces() <= 0) {
-        std::string m = v->config->geterror();
-        m = m.substr(0, m.find('\n'));
-        return make_error(Code::InvalidArgument, file + ": not a usable OCIO config" + (m.empty() ? "" : " (" + m + ")"));
-    }
+    v->setup = *cs;
+    const OIIO::ColorConfig& config = *cs->config;
+    const std::string& file = cs->source;
     std::string display = spec.display;
-    const auto displays = v->config->getDisplayNames();
-    if (display.empty() && v->config->getDefaultDisplayName()) display = v->config->getDefaultDisplayName();
+    const auto displays = config.getDisplayNames();
+    if (display.empty() && config.getDefaultDisplayName()) display = config.getDefaultDisplayName();
     if (std::find(displays.begin(), displays.end(), display) == displays.end())
         return make_error(Code::InvalidArgument, file + ": no display \"" + display + "\" (the config has: " + join(displays) + ")");
-    const auto views = v->config->getViewNames(display);
+    const auto views = config.getViewNames(display);
     if (std::find(views.begin(), views.end(), spec.view) == views.end())
         return make_error(Code::InvalidArgument, file + ": display \"" + display + "\" has no view \"" + spec.view +
                                                      "\" (it has: " + join(views) + ")");
-    const auto spaces = v->config->getColorSpaceNames();
-    std::string from;
-    for (const char* name : {"lin_rec709", "Linear Rec.709 (sRGB)", "Utility - Linear - sRGB", "linear", "Linear"})
-        if (std::find(spaces.begin(), spaces.end(), name) != spaces.end()) { from = name; break; }
-    if (from.empty())
-        if (const char* r = v->config->getColorSpaceNameByRole("scene_linear")) from = r;
-    if (from.empty())
-        return make_error(Code::InvalidArgument, file + ": no linear Rec.709 colour space (lin_rec709, linear, or a scene_linear role)");
-    v->proc = v->config->createDisplayTransform(display, spec.view, from);
+    auto from = linear_rec709_space(*cs);  // encoding 1's primaries, not the scene_linear role
+    if (!from) return from.error();
+    v->proc = config.createDisplayTransform(display, spec.view, *from);
     if (!v->proc) {
-        std::string m = v->config->geterror();
+        std::string m = const_cast<OIIO::ColorConfig&>(config).geterror();
         return make_error(Code::InvalidArgument, file + ": cannot make the display transform " + display + "/" + spec.view +
                                                      (m.empty() ? "" : ": " + m.substr(0, m.find('\n'))));
     }
-    v->what = display + "/" + spec.view + " from " + from + " (OCIO config " + file + ")";
+    v->what = display + "/" + spec.view + " from " + *from + " (OCIO config " + file + ")";
     return std::unique_ptr<ViewTransform>(std::move(v));
 }
 

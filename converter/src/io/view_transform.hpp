@@ -17,10 +17,9 @@ struct ViewSpec {
 
 class ViewTransform {
 public:
-    // Opens the config and checks the display and view exist. The pixels are taken to be
-    // linear Rec.709 (what colour encoding 1 holds): the first of the config's colour spaces
-    // named "lin_rec709", "Linear Rec.709 (sRGB)", "Utility - Linear - sRGB", "linear",
-    // "Linear" or the scene_linear role.
+    // Opens the config (io/color_config.hpp: --ocio, else $OCIO; the built-in config has no
+    // views and is refused) and checks the display and view exist. The pixels are taken to be
+    // linear Rec.709, what colour encoding 1 holds: the config's linear_rec709_space().
     static Result<std::unique_ptr<ViewTransform>> open(const ViewSpec& spec);
     virtual ~ViewTransform() = default;
     // In place: `n` straight (not premultiplied) RGB pixels, interleaved.
