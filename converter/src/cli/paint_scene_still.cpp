@@ -1,0 +1,163 @@
+#include "cli/paint_scene_still.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/commands.hpp"
+#include "cli/paint_progress.hpp"
+#include "paint/rate_control.hpp"
+#include "spt/writer.hpp"
+
+namespace spt::cli {
+
+namespace {
+
+int fail(const std::string& msg) {
+    std::fprintf(stderr, "spt paint: %s\n", msg.c_str());
+    return 1;
+}
+
+io::SceneReadOptions read_options(const PaintCommandOptions& o) {
+    io::SceneReadOptions r;
+    r.colorspace = o.colorspace;
+    r.ocio_config = o.ocio_config;
+    r.layer = o.layer;
+    return r;
+}
+
+}  // namespace
+
+Result<std::optional<paint::SceneTarget>> scene_target(const PaintCommandOptions& o, std::optional<io::SceneImage>& img) {
+    const std::string& ce = o.color_encoding;
+    const std::string& al = o.alpha;
+    if (ce != "auto" && ce != "srgb8" && ce != "linear")
+        return make_error(Code::InvalidArgument, "--color-encoding: expected auto, srgb8 or linear, got '" + ce + "'");
+    if (al != "auto" && al != "on" && al != "off")
+        return make_error(Code::InvalidArgument, "--alpha: expected auto, on or off, got '" + al + "'");
+    if (ce == "srgb8" && al == "off") return std::optional<paint::SceneTarget>{};
+    Result<io::SceneImage> r = io::read_scene_image(o.input, read_options(o));
+    if (!r) {
+        // Nothing asked for format 1.3 explicitly: the plain path reports the input's problem
+        // exactly as it always did.
+        if (ce == "linear" || al == "on") return r.error();
+        return std::optional<paint::SceneTarget>{};
+    }
+    paint::SceneTarget t;
+    t.linear = ce == "linear" || (ce == "auto" && r->is_float);
+    t.alpha = al == "on" || (al == "auto" && r->has_alpha);
+    if (!t.linear && !t.alpha) return std::optional<paint::SceneTarget>{};
+    img = std::move(*r);
+    return std::optional<paint::SceneTarget>{t};
+}
+
+std::string scene_options_text(const paint::SceneTarget& t) {
+    std::string s = std::string(" alpha=") + (t.alpha ? "on" : "off") + " color-encoding=" + (t.linear ? "linear" : "srgb8");
+    if (t.linear && t.refit.mantissa_bits != 10) s += " mantissa-bits=" + std::to_string(t.refit.mantissa_bits);
+    return s;
+}
+
+int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, const paint::SceneTarget& target,
+                      std::vector<std::pair<std::string, std::string>> metadata) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (!o.preview.empty() || !o.side_by_side.empty())
+        return fail("--preview and --side-by-side do not support alpha or linear paintings yet; render the file "
+                    "with 'spt render " + o.output + " -o OUT.exr' (or paint with --color-encoding srgb8 --alpha off)");
+    for (const std::string& w : img.warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
+    const uint32_t W = img.width, H = img.height;
+    std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;
+    auto templates = paint_templates(o.templates_dir);
+    if (!templates) return fail(templates.error().message);
+    const paint::PaintSetup setup = paint::make_setup(W, H, o.background, std::move(sets), std::move(*templates));
+
+    paint::PaintOptions po = o.paint;
+    po.rois.clear();
+    StreamInfo info;
+    for (const RoiSpec& r : o.rois) {
+        if (r.first_frame > 0) continue;  // a still is frame 0
+        if (int64_t(r.rect.x) >= W || int64_t(r.rect.y) >= H)
+            return fail("region of interest " + std::to_string(r.rect.x) + "," + std::to_string(r.rect.y) + "," +
+                        std::to_string(r.rect.w) + "," + std::to_string(r.rect.h) + " lies outside the " +
+                        std::to_string(W) + "x" + std::to_string(H) + " image");
+        po.rois.push_back(r.rect);
+        Roi roi;
+        roi.x = uint32_t(r.rect.x);
+        roi.y = uint32_t(r.rect.y);
+        roi.w = uint32_t(std::min<int64_t>(r.rect.w, int64_t(W) - r.rect.x));
+        roi.h = uint32_t(std::min<int64_t>(r.rect.h, int64_t(H) - r.rect.y));
+        info.rois.push_back(roi);
+    }
+    info.header = paint::scene_header(setup.header, target);
+    info.templates = setup.templates;
+    for (auto& [k, v] : metadata)
+        if (k == "painter.options") v += scene_options_text(target);
+    info.metadata = std::move(metadata);
+    WriterOptions wo;
+    // Coding 2 predicts from an 8-bit canvas: the writer codes such frames with coding 1.
+    wo.coding = o.stored ? Coding::Stored : o.coding == 1 ? Coding::Range : Coding::Replay;
+    const paint::LinearView view{W, H, img.rgba.data()};
+
+    auto write = [&](const std::string& path, const paint::ScenePainting& sp, const paint::PaintOptions& opts,
+                     uint64_t& bytes) -> Status {
+        auto w = Writer::create(path, info, wo);
+        if (!w) return w.error();
+        Frame f;
+        f.added = sp.strokes;
+        f.replay = paint::replay_info(setup, opts, W, H);
+        Status s = (*w)->append(f);
+        if (s) s = (*w)->finish();
+        if (!s) {
+            (*w)->abort();
+            return s;
+        }
+        bytes = (*w)->stats().total_bytes;
+        return {};
+    };
+    if (o.target_bytes > 0) {
+        const std::string scratch = o.output + ".rate-search";
+        auto trial = [&](double lambda) {
+            paint::PaintOptions tp = po;
+            tp.lambda = lambda;
+            tp.target_psnr = 0;
+            paint::RatePoint p{lambda, ~uint64_t(0), 0};
+            auto sp = paint::paint_scene(view, setup, tp, target);
+            if (!sp) return p;
+            p.psnr = sp->stats.psnr;
+            uint64_t bytes = 0;
+            if (write(scratch, *sp, tp, bytes)) p.bytes = bytes;
+            std::filesystem::remove(scratch);
+            return p;
+        };
+        const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes, 0.03, 9, po.lambda);
+        po.lambda = best.lambda;
+        std::fprintf(stderr, "spt paint: --target-bytes %llu: lambda %.4g gives %llu bytes (%+.1f%%), %.2f dB\n",
+                     (unsigned long long)o.target_bytes, best.lambda, (unsigned long long)best.bytes,
+                     100.0 * (double(best.bytes) - double(o.target_bytes)) / double(o.target_bytes), best.psnr);
+    }
+
+    PaintProgress progress(o.progress, po.max_strokes, po.target_psnr, int(setup.header.sets.size()));
+    auto sp = paint::paint_scene(view, setup, po, target, 0,
+                                 [&](uint64_t n, int set, double db) { progress.update(n, set, db); return true; });
+    if (!sp) {
+        progress.finish(false, 0, 0, sp.error().message);
+        return fail(sp.error().message);
+    }
+    uint64_t bytes = 0;
+    if (Status s = write(o.output, *sp, po, bytes); !s) {
+        progress.finish(false, sp->stats.strokes, sp->stats.psnr, s.error().message);
+        return fail(s.error().message);
+    }
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    char detail[320];
+    std::snprintf(detail, sizeof detail,
+                  "%llu strokes, %.2f dB PSNR (%s proxy%s), %llu bytes (%.2f bytes/stroke), %.2f s, stopped: %s",
+                  (unsigned long long)sp->stats.strokes, sp->stats.psnr, target.linear ? "8-bit log" : "sRGB",
+                  target.alpha ? ", RGBA" : "", (unsigned long long)bytes,
+                  sp->stats.strokes ? double(bytes) / double(sp->stats.strokes) : 0.0, secs,
+                  paint::stop_reason_name(sp->stats.stop));
+    progress.finish(true, sp->stats.strokes, sp->stats.psnr, detail);
+    if (o.progress != io::ProgressMode::Json) std::fprintf(stderr, "spt paint: %s: %s\n", o.output.c_str(), detail);
+    return 0;
+}
+
+}  // namespace spt::cli
