@@ -67,6 +67,11 @@ int video_options(const PaintCommandOptions& o, video::VideoPaintOptions& v) {
     v.coding = o.coding;
     v.target_bytes = o.target_bytes;
     v.target_bytes_per_second = o.target_bytes_per_second;
+    v.color_encoding = o.color_encoding;
+    v.alpha = o.alpha;
+    v.scene_read.colorspace = o.colorspace;
+    v.scene_read.ocio_config = o.ocio_config;
+    v.scene_read.layer = o.layer;
     if (!o.templates_dir.empty()) {
         auto t = io::load_templates(o.templates_dir);
         if (!t) return fail(t.error().message);

@@ -115,7 +115,7 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
         int64_t ox = 0, oy = 0;
         if (Status ms = coverage(renderer, s, scratch, m, ox, oy); !ms)
             return make_error(ms.error().code, "linear refit: stroke " + std::to_string(k) + ": " + ms.error().message);
-        double saa = 0, num[3] = {0, 0, 0};
+        double saa = 0, num[3] = {0, 0, 0}, top[3] = {0, 0, 0};
         const int64_t x0 = std::max<int64_t>(0, ox), y0 = std::max<int64_t>(0, oy);
         const int64_t x1 = std::min<int64_t>(W, ox + int64_t(m->w)), y1 = std::min<int64_t>(H, oy + int64_t(m->h));
         for (int64_t y = y0; y < y1; ++y) {
@@ -125,14 +125,20 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
                 if (a == 0) continue;
                 const size_t p = size_t(y) * W + size_t(x);
                 saa += a * a;
-                for (int c = 0; c < 3; ++c)
-                    num[c] += a * (255.0 * double(model.rgba[4 * p + c]) - (255.0 - a) * double(lin[canvas.rgb16[3 * p + c]]));
+                for (int c = 0; c < 3; ++c) {
+                    const double mv = model.rgba[4 * p + c];
+                    top[c] = std::max(top[c], mv);
+                    num[c] += a * (255.0 * mv - (255.0 - a) * double(lin[canvas.rgb16[3 * p + c]]));
+                }
             }
         }
         if (saa > 0) {
+            // Clamped to the model's range under the stroke: a faint rim of coverage over a dark
+            // canvas would otherwise ask for a huge colour that no pixel has.
             Rgba8 col;
             col.a = s.color().a;
-            for (int c = 0; c < 3; ++c) set_code16(col, c, linear_code(std::max(0.0, num[c] / saa), opts.mantissa_bits));
+            for (int c = 0; c < 3; ++c)
+                set_code16(col, c, linear_code(std::clamp(num[c] / saa, 0.0, top[c]), opts.mantissa_bits));
             set_colour(s, col);
             ++st.refit;
         } else {
@@ -167,23 +173,30 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
         if (Status ms = coverage(renderer, s, scratch, m, ox, oy); !ms) return ms;
         const int64_t x0 = std::max<int64_t>(0, ox), y0 = std::max<int64_t>(0, oy);
         const int64_t x1 = std::min<int64_t>(W, ox + int64_t(m->w)), y1 = std::min<int64_t>(H, oy + int64_t(m->h));
-        double sww = 0, num[3] = {0, 0, 0};
+        double sww = 0, saa = 0, num[3] = {0, 0, 0}, top[3] = {0, 0, 0};
         for (int64_t y = y0; y < y1; ++y) {
             const uint8_t* ar = m->a.data() + size_t(y - oy) * m->w;
             for (int64_t x = x0; x < x1; ++x) {
                 if (ar[x - ox] == 0) continue;
                 const size_t p = size_t(y) * W + size_t(x);
-                const double w = ar[x - ox] * double(T[p]) / 255.0;
+                const double a = ar[x - ox] / 255.0, w = a * double(T[p]);
                 sww += w * w;
-                for (int c = 0; c < 3; ++c) num[c] += w * (double(model.rgba[4 * p + c]) - F[3 * p + c]);
+                saa += a * a;
+                for (int c = 0; c < 3; ++c) {
+                    const double mv = model.rgba[4 * p + c];
+                    top[c] = std::max(top[c], mv);
+                    num[c] += w * (mv - F[3 * p + c]);
+                }
             }
         }
-        if (sww > 1e-12) {
+        // A stroke that shows through less than ~20% (in w^2) is left as it is: its colour
+        // would be fitted to a few faint pixels.
+        if (sww > 0.04 * saa && sww > 1e-9) {
             Rgba8 col = s.color();
             double d[3];
             for (int c = 0; c < 3; ++c) {
                 const double old = lin[code16(col, c)];
-                const uint16_t code = linear_code(std::max(0.0, old + num[c] / sww), opts.mantissa_bits);
+                const uint16_t code = linear_code(std::clamp(old + num[c] / sww, 0.0, std::max(old, top[c])), opts.mantissa_bits);
                 d[c] = double(lin[code]) - old;
                 set_code16(col, c, code);
             }

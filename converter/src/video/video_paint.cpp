@@ -80,8 +80,35 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         if (!r) return r.error();
         rois = std::move(*r);
     }
-    Result<std::unique_ptr<FrameSource>> src = open_source(opts.input, opts.frames, opts.skip_bad_frames);
+    // Format 1.3 targets: sequences are opened reading scene images; "auto" looks at the first
+    // frame, and a plain outcome reopens the source the 8-bit way (bytes as before).
+    const bool want_scene = !(opts.color_encoding == "srgb8" && opts.alpha == "off") &&
+                            !(io::is_video_file(opts.input) && opts.color_encoding != "linear" && opts.alpha != "on");
+    if (opts.color_encoding != "auto" && opts.color_encoding != "srgb8" && opts.color_encoding != "linear")
+        return make_error(Code::InvalidArgument, "--color-encoding: expected auto, srgb8 or linear, got '" + opts.color_encoding + "'");
+    if (opts.alpha != "auto" && opts.alpha != "on" && opts.alpha != "off")
+        return make_error(Code::InvalidArgument, "--alpha: expected auto, on or off, got '" + opts.alpha + "'");
+    paint::SceneTarget target = opts.scene;
+    bool scene = false;
+    Result<std::unique_ptr<FrameSource>> src = open_source(opts.input, opts.frames, opts.skip_bad_frames,
+                                                           want_scene ? &opts.scene_read : nullptr);
     if (!src) return src.error();
+    SourceFrame frame;
+    Result<bool> got = (*src)->next(frame);
+    if (!got) return got.error();
+    if (!*got) return make_error(Code::IoError, (*src)->describe() + ": no frames to paint");
+    if (want_scene) {
+        target.linear = opts.color_encoding == "linear" || (opts.color_encoding == "auto" && frame.scene.is_float);
+        target.alpha = opts.alpha == "on" || (opts.alpha == "auto" && frame.scene.has_alpha);
+        scene = target.linear || target.alpha;
+        if (!scene) {
+            src = open_source(opts.input, opts.frames, opts.skip_bad_frames);
+            if (!src) return src.error();
+            got = (*src)->next(frame);
+            if (!got) return got.error();
+            if (!*got) return make_error(Code::IoError, (*src)->describe() + ": no frames to paint");
+        }
+    }
     FrameSource& source = **src;
 
     Rational fps{24, 1};
@@ -93,16 +120,13 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         fps = source.fps();
     }
 
-    SourceFrame frame;
-    Result<bool> got = source.next(frame);
-    if (!got) return got.error();
-    if (!*got) return make_error(Code::IoError, source.describe() + ": no frames to paint");
-
     std::vector<std::pair<std::string, std::string>> meta = {
         {"software", "spt video painter"},
         {"source", printable_text(opts.input)},  // names need not be UTF-8
         {"painter.seed", std::to_string(opts.paint.seed)},
-        {"painter.options", printable_text(options_text(opts))},
+        {"painter.options", printable_text(options_text(opts) + (scene ? std::string(" alpha=") + (target.alpha ? "on" : "off") +
+                                                                              " color-encoding=" + (target.linear ? "linear" : "srgb8")
+                                                                        : std::string()))},
     };
     // SPEC.md 3.3: the source's own frame numbers, when the painted frames are consecutive.
     if (frame.number > 0 && frames_consecutive(opts.frames)) meta.emplace_back(kFirstFrameKey, std::to_string(frame.number));
@@ -122,20 +146,34 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
                                                                                : uint64_t(opts.keyframe_interval));
         eo.frame_byte_budget = std::max(1.0, per_frame);
     }
-    Result<std::unique_ptr<VideoEncoder>> enc =
-        VideoEncoder::create(eo, frame.image.width, frame.image.height, fps, rois, meta);
+    eo.scene = scene ? target : paint::SceneTarget{};
+    if (scene && target.linear) eo.scene_peak = paint::proxy_for(paint::LinearView{frame.scene.width, frame.scene.height, frame.scene.rgba.data()}).peak;
+    const uint32_t fw = scene ? frame.scene.width : frame.image.width, fh = scene ? frame.scene.height : frame.image.height;
+    Result<std::unique_ptr<VideoEncoder>> enc = VideoEncoder::create(eo, fw, fh, fps, rois, meta);
     if (!enc) return enc.error();
     VideoEncoder& encoder = **enc;
 
     progress.set_total(double(source.expected_frames()));
     uint64_t skipped = 0;
     bool interrupted = false;
+    std::vector<uint8_t> proxy_rgb, proxy_alpha;
     for (;;) {
         if (frame.repeated) {
             ++skipped;
             std::fprintf(stderr, "spt paint: warning: %s; repeating the previous frame\n", frame.problem.c_str());
         }
-        Result<FrameResult> r = encoder.add_frame(frame.image.rgb.data(), frame.number);
+        Result<FrameResult> r = make_error(Code::BadState, "no frame");
+        if (scene) {
+            // The frame's 8-bit proxy (premultiplied by its alpha), and the frame itself.
+            for (const std::string& w : frame.scene.warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
+            const paint::LinearView lv{frame.scene.width, frame.scene.height, frame.scene.rgba.data()};
+            paint::ProxyTransform t;
+            t.peak = target.linear ? std::max(1.0, eo.scene_peak) : 1.0;
+            paint::make_proxy(lv, t, proxy_rgb, target.alpha ? &proxy_alpha : nullptr);
+            r = encoder.add_frame(proxy_rgb.data(), target.alpha ? proxy_alpha.data() : nullptr, &lv, frame.number);
+        } else {
+            r = encoder.add_frame(frame.image.rgb.data(), frame.number);
+        }
         if (!r) {
             encoder.abort();
             Error e = r.error();
