@@ -71,12 +71,15 @@ TEST(LinearProxy, SrgbBelowOneLogAboveAndThePeakAt255) {
 }
 
 TEST(LinearRefit, NeverWorseThanTheProxyColoursConverted) {
-    for (bool alpha : {false, true}) {
+    for (int run = 0; run < 4; ++run) {
+        // With and without alpha; the refit's own weighted error and plain linear least squares.
+        const bool alpha = run & 1, weighted = run & 2;
         const LinearImage img = hdr_image(96, 64, alpha);
         PaintSetup setup = setup_for(96, 64);
         SceneTarget target;
         target.alpha = alpha;
         target.linear = true;
+        target.refit.highlight_weight = weighted;
         auto sp = paint_scene(img.view(), setup, opts(2), target);
         ASSERT_TRUE(sp.ok()) << sp.error().message;
         ASSERT_GT(sp->strokes.size(), 50u);
@@ -104,8 +107,9 @@ TEST(LinearRefit, NeverWorseThanTheProxyColoursConverted) {
         ASSERT_TRUE((*lr)->render(refit, sp->strokes).ok());
         EXPECT_EQ(refit.rgb16, sp->canvas.rgb16);  // the refit's canvas is the decoder's
         EXPECT_EQ(refit.alpha, sp->canvas.alpha);
-        const double e_refit = linear_sse(img.view(), refit), e_conv = linear_sse(img.view(), conv);
-        EXPECT_LT(e_refit, e_conv) << "alpha " << alpha;
+        const double e_refit = refit_error(img.view(), refit, weighted), e_conv = refit_error(img.view(), conv, weighted);
+        EXPECT_LT(e_refit, e_conv) << "alpha " << alpha << " weighted " << weighted;
+        if (!weighted) EXPECT_LT(linear_sse(img.view(), refit), linear_sse(img.view(), conv));
         // Highlights survive: the painted glow peaks far above 1.
         float peak = 0;
         for (uint16_t c : refit.rgb16) peak = std::max(peak, half_to_float(c));

@@ -69,7 +69,7 @@ Result<std::optional<paint::SceneTarget>> scene_target(const PaintCommandOptions
 
 std::string scene_options_text(const paint::SceneTarget& t) {
     std::string s = std::string(" alpha=") + (t.alpha ? "on" : "off") + " color-encoding=" + (t.linear ? "linear" : "srgb8");
-    if (t.linear && t.refit.mantissa_bits != 10) s += " mantissa-bits=" + std::to_string(t.refit.mantissa_bits);
+    if (t.linear) s += " mantissa-bits=" + std::to_string(t.refit.mantissa_bits) + (t.refit.highlight_weight ? "" : " refit=linear");
     return s;
 }
 

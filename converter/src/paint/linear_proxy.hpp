@@ -22,6 +22,11 @@ struct LinearView {
 
 struct ProxyTransform {
     double peak = 1.0;  // the linear value that maps to 255 (>= 1)
+    double bend = 1.0;  // b of the log segment (>= 1), see with_peak()
+    // The transform of a peak, the log segment bent (b) so that 1.0 maps to at least `unit` of
+    // the range: highlights then share the top codes, and the picture below 1 keeps most.
+    static ProxyTransform with_peak(double peak, double unit = kDefaultUnit);
+    static constexpr double kDefaultUnit = 0.7;  // measured, README.md "Linear HDR"
     // v(x) / v(peak) in 0..1 for a straight linear value x (clamped at the peak).
     double encode(double x) const;
     // The straight linear value whose proxy is p (0..1 of v(peak)).

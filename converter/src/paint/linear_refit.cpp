@@ -20,7 +20,34 @@ const std::vector<float>& code_values() {
     return table;
 }
 
+// Per-pixel weights of the refit's least squares (RefitOptions::highlight_weight).
+std::vector<float> pixel_weights(const LinearView& model, bool highlight_weight) {
+    const size_t n = size_t(model.width) * model.height;
+    std::vector<float> w(n, 1.0f);
+    if (highlight_weight)
+        for (size_t p = 0; p < n; ++p) {
+            const double m = std::max({model.rgba[4 * p], model.rgba[4 * p + 1], model.rgba[4 * p + 2]});
+            w[p] = float(1.0 / ((1.0 + m) * (1.0 + m)));
+        }
+    return w;
+}
+
+double colour_error(const LinearView& model, const Canvas& c, const std::vector<float>& weight) {
+    const std::vector<float>& lin = code_values();
+    double e = 0;
+    for (size_t p = 0; p < weight.size(); ++p)
+        for (int k = 0; k < 3; ++k) {
+            const double d = double(lin[c.rgb16[3 * p + k]]) - double(model.rgba[4 * p + k]);
+            e += double(weight[p]) * d * d;
+        }
+    return e;
+}
+
 }  // namespace
+
+double refit_error(const LinearView& model, const Canvas& canvas, bool highlight_weight) {
+    return colour_error(model, canvas, pixel_weights(model, highlight_weight));
+}
 
 uint16_t linear_code(double value, int mantissa_bits) {
     const uint16_t h = float_to_half_code(float(value));
@@ -102,6 +129,8 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
     RefitStats st;
     Mask scratch;
     const Canvas below = canvas;  // what the strokes are drawn on
+    const std::vector<float> weight = pixel_weights(model, opts.highlight_weight);
+    auto sse = [&](const Canvas& c) { return colour_error(model, c, weight); };
     std::vector<Stroke> converted = strokes;
     for (Stroke& s : converted) set_colour(s, proxy_to_linear(s.color(), t, opts.mantissa_bits));
 
@@ -124,11 +153,12 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
                 const double a = ar[x - ox];
                 if (a == 0) continue;
                 const size_t p = size_t(y) * W + size_t(x);
-                saa += a * a;
+                const double q = weight[p];
+                saa += q * a * a;
                 for (int c = 0; c < 3; ++c) {
                     const double mv = model.rgba[4 * p + c];
                     top[c] = std::max(top[c], mv);
-                    num[c] += a * (255.0 * mv - (255.0 - a) * double(lin[canvas.rgb16[3 * p + c]]));
+                    num[c] += q * a * (255.0 * mv - (255.0 - a) * double(lin[canvas.rgb16[3 * p + c]]));
                 }
             }
         }
@@ -158,7 +188,7 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
     // final error (up to the half rounding of the exact render that follows).
     Canvas conv = below;
     if (Status ds = draw_all(renderer, conv, converted); !ds) return ds;
-    if (linear_sse(model, conv) < linear_sse(model, canvas)) {
+    if (sse(conv) < sse(canvas)) {
         strokes = converted;
         canvas = std::move(conv);
     }
@@ -179,13 +209,13 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
             for (int64_t x = x0; x < x1; ++x) {
                 if (ar[x - ox] == 0) continue;
                 const size_t p = size_t(y) * W + size_t(x);
-                const double a = ar[x - ox] / 255.0, w = a * double(T[p]);
-                sww += w * w;
-                saa += a * a;
+                const double a = ar[x - ox] / 255.0, w = a * double(T[p]), q = weight[p];
+                sww += q * w * w;
+                saa += q * a * a;
                 for (int c = 0; c < 3; ++c) {
                     const double mv = model.rgba[4 * p + c];
                     top[c] = std::max(top[c], mv);
-                    num[c] += w * (mv - F[3 * p + c]);
+                    num[c] += q * w * (mv - F[3 * p + c]);
                 }
             }
         }

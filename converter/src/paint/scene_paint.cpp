@@ -23,7 +23,7 @@ Result<ScenePainting> paint_scene(const LinearView& img, const PaintSetup& setup
     // An sRGB8 file is painted on the image's own sRGB encoding (values above 1 clip); a
     // linear one on the log-extended proxy of its peak.
     if (!target.linear) out.transform.peak = 1.0;
-    else if (peak > 0) out.transform.peak = std::max(1.0, peak);
+    else if (peak > 0) out.transform = ProxyTransform::with_peak(peak);
     else out.transform = proxy_for(img);
 
     std::vector<uint8_t> rgb, alpha;

@@ -71,7 +71,7 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptio
     // (with alpha when the file has it) of the same geometry.
     e->file_header_ = paint::scene_header(h, opts.scene);
     e->linear_ = opts.scene.linear;
-    e->transform_.peak = e->linear_ ? std::max(1.0, opts.scene_peak) : 1.0;
+    if (e->linear_) e->transform_ = paint::ProxyTransform::with_peak(opts.scene_peak);
     h.alpha = opts.scene.alpha;
     if (e->linear_) h.background = paint::proxy_background(opts.background, e->transform_);
     // The band renderer copies 8-bit colour rows only: alpha canvases render whole frames.

@@ -167,8 +167,7 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
             // The frame's 8-bit proxy (premultiplied by its alpha), and the frame itself.
             for (const std::string& w : frame.scene.warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
             const paint::LinearView lv{frame.scene.width, frame.scene.height, frame.scene.rgba.data()};
-            paint::ProxyTransform t;
-            t.peak = target.linear ? std::max(1.0, eo.scene_peak) : 1.0;
+            const paint::ProxyTransform t = target.linear ? paint::ProxyTransform::with_peak(eo.scene_peak) : paint::ProxyTransform{};
             paint::make_proxy(lv, t, proxy_rgb, target.alpha ? &proxy_alpha : nullptr);
             r = encoder.add_frame(proxy_rgb.data(), target.alpha ? proxy_alpha.data() : nullptr, &lv, frame.number);
         } else {
