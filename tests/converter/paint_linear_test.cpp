@@ -65,6 +65,17 @@ TEST(LinearProxy, SrgbBelowOneLogAboveAndThePeakAt255) {
     const double e = 1e-6;
     const double left = (t.encode(1) - t.encode(1 - e)) / e, right = (t.encode(1 + e) - t.encode(1)) / e;
     EXPECT_NEAR(left, right, 1e-4 * left);
+    // The bent segment of a peak of 21: 1.0 at 0.7 of the range, still C1 at 1, monotone.
+    const ProxyTransform b = ProxyTransform::with_peak(21.0);
+    EXPECT_GT(b.bend, 1.0);
+    EXPECT_NEAR(b.encode(1.0), 0.7, 1e-9);
+    EXPECT_DOUBLE_EQ(b.encode(21.0), 1.0);
+    const double bl = (b.encode(1) - b.encode(1 - e)) / e, br = (b.encode(1 + e) - b.encode(1)) / e;
+    EXPECT_NEAR(bl, br, 1e-4 * bl);
+    for (double x = 1.0; x < 21; x *= 1.5) {
+        EXPECT_LT(b.encode(x), b.encode(x * 1.5));
+        EXPECT_NEAR(b.decode(b.encode(x)), x, 1e-9 * x);
+    }
     // Peak 1: the plain sRGB curve.
     ProxyTransform s;
     EXPECT_NEAR(s.encode(0.18), srgb_encode(0.18), 1e-12);

@@ -1,11 +1,13 @@
 // The 8-bit perceptual proxy a scene-linear (HDR) image is painted on (README.md "Linear HDR"):
 // the painter places strokes where they matter to the eye, then linear_refit.hpp gives them
 // their linear colours. The proxy of a linear value x (straight, not premultiplied) is
-//     v(x) = srgb(x)              for x <= 1  (the sRGB transfer curve)
-//     v(x) = 1 + k ln(x)          for x > 1,  k = 1.055 / 2.4 (v and v' continuous at 1)
-// scaled so that the image's peak maps to 1: proxy = round(255 * v(x) / v(peak)) (peak >= 1).
-// Highlights up to the peak keep their gradations on a log scale instead of clipping, and they
-// do not dominate the error the way linear values would.
+//     v(x) = srgb(x)                          for x <= 1  (the sRGB transfer curve)
+//     v(x) = 1 + k ln(1 + b (x - 1)) / b      for x > 1,  k = 1.055 / 2.4
+// (v and v' continuous at 1 for every bend b >= 1; b = 1 is 1 + k ln x), scaled so that the
+// image's peak maps to 255: proxy = round(255 * v(x) / v(peak)). b is the smallest that puts
+// 1.0 at 0.7 of the range or above: highlights up to the peak keep their gradations on a log
+// scale in the top codes instead of clipping, and neither dominate the error nor squeeze the
+// picture below 1 into a few codes.
 #pragma once
 
 #include <cstdint>
