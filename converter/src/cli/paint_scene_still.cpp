@@ -61,7 +61,8 @@ Result<std::optional<paint::SceneTarget>> scene_target(const PaintCommandOptions
     }
     paint::SceneTarget t;
     t.linear = ce == "linear" || (ce == "auto" && r->is_float);
-    t.alpha = al == "on" || (al == "auto" && r->has_alpha);
+    t.alpha = al == "on" || (al == "auto" && r->has_alpha &&
+                             paint::has_transparency(paint::LinearView{r->width, r->height, r->rgba.data()}));
     if (!t.linear && !t.alpha) return std::optional<paint::SceneTarget>{};
     img = std::move(*r);
     return std::optional<paint::SceneTarget>{t};

@@ -4,6 +4,13 @@
 
 namespace spt::paint {
 
+bool has_transparency(const LinearView& img) {
+    const size_t n = size_t(img.width) * img.height;
+    for (size_t i = 0; i < n; ++i)
+        if (img.rgba[4 * i + 3] < 1.0f) return true;
+    return false;
+}
+
 Header scene_header(const Header& plain, const SceneTarget& target) {
     Header h = plain;
     h.alpha = target.alpha;

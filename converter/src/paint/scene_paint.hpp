@@ -31,6 +31,10 @@ struct ScenePainting {
 Result<ScenePainting> paint_scene(const LinearView& img, const PaintSetup& setup, const PaintOptions& opts,
                                   const SceneTarget& target, double peak = 0, const PaintProgressFn& progress = {});
 
+// True when some pixel is not fully opaque: an alpha channel that is 1 everywhere (an RGBA
+// PNG of an opaque picture) asks for no alpha canvas under "--alpha auto".
+bool has_transparency(const LinearView& img);
+
 // The header a SceneTarget gives a plain setup header (background converted for linear files).
 Header scene_header(const Header& plain, const SceneTarget& target);
 

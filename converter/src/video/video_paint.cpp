@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "io/sequence.hpp"
 #include "video/frame_source.hpp"
 #include "io/roi_file.hpp"
 #include "video/video_encoder.hpp"
@@ -19,6 +20,10 @@ namespace spt::video {
 namespace {
 
 std::atomic<bool> g_signal_stop{false};
+
+// The least peak of a sequence's linear proxy (paint/linear_proxy.hpp): a dark first frame
+// leaves room for highlights later.
+constexpr double kSequencePeakMin = 16.0;
 // The first signal asks for a clean stop after the current frame; a second one ends the
 // process the default way (the output then only exists as "<out>.partial", never under its
 // final name).
@@ -80,35 +85,38 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         if (!r) return r.error();
         rois = std::move(*r);
     }
-    // Format 1.3 targets: sequences are opened reading scene images; "auto" looks at the first
-    // frame, and a plain outcome reopens the source the 8-bit way (bytes as before).
-    const bool want_scene = !(opts.color_encoding == "srgb8" && opts.alpha == "off") &&
-                            !(io::is_video_file(opts.input) && opts.color_encoding != "linear" && opts.alpha != "on");
+    // Format 1.3 targets. "auto" is decided on the first file of the whole sequence (not of
+    // --frames), and so is the linear proxy's peak, so that every farm task of a plan paints
+    // the same way as one process would. Video files hold neither alpha nor scene-linear light.
     if (opts.color_encoding != "auto" && opts.color_encoding != "srgb8" && opts.color_encoding != "linear")
         return make_error(Code::InvalidArgument, "--color-encoding: expected auto, srgb8 or linear, got '" + opts.color_encoding + "'");
     if (opts.alpha != "auto" && opts.alpha != "on" && opts.alpha != "off")
         return make_error(Code::InvalidArgument, "--alpha: expected auto, on or off, got '" + opts.alpha + "'");
+    const bool want_scene = !(opts.color_encoding == "srgb8" && opts.alpha == "off") &&
+                            !(io::is_video_file(opts.input) && opts.color_encoding != "linear" && opts.alpha != "on");
     paint::SceneTarget target = opts.scene;
     bool scene = false;
+    double peak = 1.0;
+    if (want_scene && !io::is_video_file(opts.input)) {
+        Result<std::vector<io::SequenceFile>> all = io::list_sequence(opts.input);
+        if (!all) return all.error();
+        if (all->empty()) return make_error(Code::IoError, opts.input + ": no frames found");
+        Result<io::SceneImage> first = io::read_scene_image(all->front().path, opts.scene_read);
+        if (!first) return first.error();
+        const paint::LinearView lv{first->width, first->height, first->rgba.data()};
+        target.linear = opts.color_encoding == "linear" || (opts.color_encoding == "auto" && first->is_float);
+        target.alpha = opts.alpha == "on" || (opts.alpha == "auto" && first->has_alpha && paint::has_transparency(lv));
+        scene = target.linear || target.alpha;
+        // Headroom over the first frame for brighter frames later in the shot.
+        if (target.linear) peak = std::max(kSequencePeakMin, 2.0 * paint::proxy_for(lv).peak);
+    }
     Result<std::unique_ptr<FrameSource>> src = open_source(opts.input, opts.frames, opts.skip_bad_frames,
-                                                           want_scene ? &opts.scene_read : nullptr);
+                                                           scene ? &opts.scene_read : nullptr);
     if (!src) return src.error();
     SourceFrame frame;
     Result<bool> got = (*src)->next(frame);
     if (!got) return got.error();
     if (!*got) return make_error(Code::IoError, (*src)->describe() + ": no frames to paint");
-    if (want_scene) {
-        target.linear = opts.color_encoding == "linear" || (opts.color_encoding == "auto" && frame.scene.is_float);
-        target.alpha = opts.alpha == "on" || (opts.alpha == "auto" && frame.scene.has_alpha);
-        scene = target.linear || target.alpha;
-        if (!scene) {
-            src = open_source(opts.input, opts.frames, opts.skip_bad_frames);
-            if (!src) return src.error();
-            got = (*src)->next(frame);
-            if (!got) return got.error();
-            if (!*got) return make_error(Code::IoError, (*src)->describe() + ": no frames to paint");
-        }
-    }
     FrameSource& source = **src;
 
     Rational fps{24, 1};
@@ -147,7 +155,7 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         eo.frame_byte_budget = std::max(1.0, per_frame);
     }
     eo.scene = scene ? target : paint::SceneTarget{};
-    if (scene && target.linear) eo.scene_peak = paint::proxy_for(paint::LinearView{frame.scene.width, frame.scene.height, frame.scene.rgba.data()}).peak;
+    eo.scene_peak = peak;
     const uint32_t fw = scene ? frame.scene.width : frame.image.width, fh = scene ? frame.scene.height : frame.image.height;
     Result<std::unique_ptr<VideoEncoder>> enc = VideoEncoder::create(eo, fw, fh, fps, rois, meta);
     if (!enc) return enc.error();

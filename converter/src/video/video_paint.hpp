@@ -88,8 +88,9 @@ struct VideoPaintOptions {
     std::string alpha = "off";             // auto|on|off
     io::SceneReadOptions scene_read;
     // What the encoder paints (video_paint sets them from the above; plain when neither):
-    // strokes on an alpha canvas, and colour encoding 1 through the 8-bit proxy of the first
-    // frame's peak (paint/linear_proxy.hpp) with every frame's new strokes refit in linear.
+    // strokes on an alpha canvas, and colour encoding 1 through the 8-bit proxy of peak
+    // `scene_peak` (paint/linear_proxy.hpp; video_paint: twice the sequence's first file's
+    // peak, at least 16) with every frame's new strokes refit in linear.
     paint::SceneTarget scene;
     double scene_peak = 1.0;
     // Alpha canvases: a live stroke whose coverage lies for more than this share on pixels the
