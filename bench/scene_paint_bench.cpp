@@ -3,9 +3,9 @@
 // bytes, paint time (thread CPU, 1 thread, median of --runs), error in a log domain
 // (mean |log2((p + e) / (s + e))|, e = 1e-3, over R, G, B of premultiplied linear values), in
 // sRGB after the view transform (PSNR of a * srgb(min(1, straight)), the painting over black)
-// and of the alpha (mean |A_p - A_s| overall, inside the source's matte (A_s > 0), outside).
+// (over sRGB grey 128) and of the alpha (mean |A_p - A_s| overall, inside the source's matte (A_s > 0), outside).
 //
-// usage: scene_paint_bench [--runs N] [--lambda X] [--target-psnr DB] [--peak-dump] IMAGE...
+// usage: scene_paint_bench [--runs N] [--lambda X] [--target-psnr DB] [--alpha-weight W] IMAGE...
 // e.g.   build/bench/scene_paint_bench /work/shared/media/exr/orbit/orbit.0012.exr
 #include <cmath>
 #include <cstdio>
@@ -43,19 +43,26 @@ double painted_linear(const Canvas& c, size_t i, int k) {
 
 double painted_alpha(const Canvas& c, size_t i) { return c.alpha.empty() ? 1.0 : c.alpha[i] / 255.0; }
 
-double view(double v, double a) { return a <= 0 ? 0 : 255.0 * a * paint::srgb_encode(std::min(1.0, v / a)); }
+// The sRGB view over a mid-grey background (sRGB 128): over black, dark fringes a painting
+// leaves outside the matte would not show.
+double view(double v, double a) {
+    static const double grey = paint::srgb_decode(128.0 / 255.0);
+    return 255.0 * paint::srgb_encode(std::min(1.0, v + (1.0 - a) * grey));
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
     int runs = 3;
     double lambda = -1, target = 0;
+    int alpha_weight = 0;
     std::vector<std::string> files;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--runs" && i + 1 < argc) runs = std::atoi(argv[++i]);
         else if (a == "--lambda" && i + 1 < argc) lambda = std::atof(argv[++i]);
         else if (a == "--target-psnr" && i + 1 < argc) target = std::atof(argv[++i]);
+        else if (a == "--alpha-weight" && i + 1 < argc) alpha_weight = std::atoi(argv[++i]);
         else files.push_back(a);
     }
     if (files.empty()) {
@@ -82,6 +89,7 @@ int main(int argc, char** argv) {
         po.color_step = 12;
         if (lambda >= 0) po.lambda = lambda;
         po.target_psnr = target;
+        if (alpha_weight > 0) po.alpha_weight = alpha_weight;
         for (const Variant& v : variants) {
             paint::SceneTarget t;
             t.alpha = img->has_alpha;

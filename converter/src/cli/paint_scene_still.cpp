@@ -1,6 +1,8 @@
 #include "cli/paint_scene_still.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -8,6 +10,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/paint_progress.hpp"
+#include "io/image_io.hpp"
+#include "spt/color.hpp"
 #include "paint/rate_control.hpp"
 #include "spt/writer.hpp"
 
@@ -26,6 +30,46 @@ io::SceneReadOptions read_options(const PaintCommandOptions& o) {
     r.ocio_config = o.ocio_config;
     r.layer = o.layer;
     return r;
+}
+
+// The 8-bit sRGB view of a premultiplied linear pixel over an sRGB background (what --preview
+// and --side-by-side show: the sRGB curve, values above 1 clipped).
+void view_pixel(const double lin[3], double a, Rgb8 bg, uint8_t* out) {
+    const uint8_t b[3] = {bg.r, bg.g, bg.b};
+    for (int c = 0; c < 3; ++c) {
+        const double v = lin[c] + (1.0 - a) * paint::srgb_decode(b[c] / 255.0);
+        out[c] = uint8_t(std::lround(255.0 * paint::srgb_encode(std::min(1.0, v))));
+    }
+}
+
+// A painting as 8-bit sRGB over the background. sRGB8 alpha canvases are flattened in their own
+// (premultiplied 8-bit) values, as a viewer composites them.
+std::vector<uint8_t> painting_view(const Canvas& c, const Header& h, Rgb8 bg) {
+    const size_t n = size_t(c.width) * c.height;
+    std::vector<uint8_t> out(n * 3);
+    const uint8_t b[3] = {bg.r, bg.g, bg.b};
+    for (size_t i = 0; i < n; ++i) {
+        const double a = c.alpha.empty() ? 1.0 : c.alpha[i] / 255.0;
+        if (h.color == ColorEncoding::LinearHalf) {
+            const double lin[3] = {half_to_float(c.rgb16[3 * i]), half_to_float(c.rgb16[3 * i + 1]),
+                                   half_to_float(c.rgb16[3 * i + 2])};
+            view_pixel(lin, a, bg, &out[3 * i]);
+        } else {
+            const uint32_t na = c.alpha.empty() ? 0 : 255u - c.alpha[i];
+            for (int k = 0; k < 3; ++k) out[3 * i + k] = uint8_t(std::min<uint32_t>(255, c.rgb[3 * i + k] + (b[k] * na + 127) / 255));
+        }
+    }
+    return out;
+}
+
+std::vector<uint8_t> source_view(const io::SceneImage& img, Rgb8 bg) {
+    const size_t n = size_t(img.width) * img.height;
+    std::vector<uint8_t> out(n * 3);
+    for (size_t i = 0; i < n; ++i) {
+        const double lin[3] = {img.rgba[4 * i], img.rgba[4 * i + 1], img.rgba[4 * i + 2]};
+        view_pixel(lin, img.rgba[4 * i + 3], bg, &out[3 * i]);
+    }
+    return out;
 }
 
 }  // namespace
@@ -77,9 +121,6 @@ std::string scene_options_text(const paint::SceneTarget& t) {
 int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, const paint::SceneTarget& target,
                       std::vector<std::pair<std::string, std::string>> metadata) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (!o.preview.empty() || !o.side_by_side.empty())
-        return fail("--preview and --side-by-side do not support alpha or linear paintings yet; render the file "
-                    "with 'spt render " + o.output + " -o OUT.exr' (or paint with --color-encoding srgb8 --alpha off)");
     for (const std::string& w : img.warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
     const uint32_t W = img.width, H = img.height;
     std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;
@@ -163,6 +204,21 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
     if (Status s = write(o.output, *sp, po, bytes); !s) {
         progress.finish(false, sp->stats.strokes, sp->stats.psnr, s.error().message);
         return fail(s.error().message);
+    }
+    // Previews: the 8-bit sRGB view over --background (spt render writes the canvas itself).
+    if (!o.preview.empty() || !o.side_by_side.empty()) {
+        const std::vector<uint8_t> painted = painting_view(sp->canvas, sp->header, o.background);
+        if (!o.preview.empty())
+            if (Status p = io::write_image(o.preview, W, H, painted.data()); !p) return fail(p.error().message);
+        if (!o.side_by_side.empty()) {
+            const std::vector<uint8_t> src = source_view(img, o.background);
+            std::vector<uint8_t> both(size_t(2) * W * H * 3);
+            for (uint32_t y = 0; y < H; ++y) {
+                std::copy_n(src.data() + size_t(y) * W * 3, size_t(W) * 3, both.data() + size_t(y) * 2 * W * 3);
+                std::copy_n(painted.data() + size_t(y) * W * 3, size_t(W) * 3, both.data() + (size_t(y) * 2 * W + W) * 3);
+            }
+            if (Status p = io::write_image(o.side_by_side, 2 * W, H, both.data()); !p) return fail(p.error().message);
+        }
     }
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     char detail[320];

@@ -59,7 +59,7 @@ int64_t sse_over(const Plane& p, const Domain& d) {
         }
         if (p.has_alpha()) {
             const int v = int(p.canvas_a[i]) - int(p.model_a[i]);
-            e += v * v;
+            e += (v > 0 ? p.alpha_weight : 1) * v * v;
         }
         return e;
     };
@@ -219,6 +219,7 @@ PaintStats paint(const ImageView& model, Canvas& canvas, const Renderer& rendere
     if (alpha) {
         plane.model_a = model.alpha;
         plane.canvas_a = canvas.alpha.data();
+        plane.alpha_weight = std::clamp(opts.alpha_weight, 1, 1024);
     }
     const double samples = (alpha ? 4.0 : 3.0) * W * H;
     // A caller's field is used when it fits (right size, valid indices); otherwise our own.

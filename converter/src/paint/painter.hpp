@@ -52,6 +52,11 @@ struct PaintOptions {
     // stroke, the prediction of frame coding 2 (SPEC.md 7.7.5): a step of 4 saves about 6 bits
     // a stroke for a fraction of a dB. 1 = the exact least-squares colour.
     int color_step = 1;
+    // Alpha canvases: the weight (1..1024) of the alpha channel's squared error where the canvas
+    // is more opaque than the model (over-coverage, which over-compositing can never undo),
+    // against a colour channel's; under-coverage weighs 1. 32 measured (README.md "Alpha
+    // canvases").
+    int alpha_weight = 32;
 };
 
 enum class StopReason { Converged, MaxStrokes, TargetPsnr, Cancelled };

@@ -67,7 +67,7 @@ ColourSums colour_sums_impl(const Plane& p, const Mask& fp, const Spans& sp, int
             r_old += d0 * d0 + d1 * d1 + d2 * d2;
             if constexpr (Alpha) {
                 const int32_t da = int32_t(p.canvas_a[abase + size_t(i)]) - p.model_a[abase + size_t(i)];
-                r_old += da * da;
+                r_old += (da > 0 ? p.alpha_weight : 1) * da * da;
             }
         }
         s.saa += r_saa; s.num[0] += r0; s.num[1] += r1; s.num[2] += r2; s.old_err += r_old;
@@ -143,7 +143,7 @@ int64_t new_error_impl(const Plane& p, const Mask& fp, const Spans& sp, int32_t 
             r_new += d0 * d0 + d1 * d1 + d2 * d2;
             if constexpr (Alpha) {
                 const int32_t da = int32_t(blend8(p.canvas_a[abase + size_t(i)], 255, a)) - p.model_a[abase + size_t(i)];
-                r_new += da * da;
+                r_new += (da > 0 ? p.alpha_weight : 1) * da * da;
             }
         }
         e += r_new;

@@ -19,6 +19,7 @@ struct Plane {
     // same weight as a colour channel, and composites as the renderer does: blend8(A, 255, a).
     const uint8_t* model_a = nullptr;
     uint8_t* canvas_a = nullptr;
+    int32_t alpha_weight = 1;  // of the alpha channel's squared error (PaintOptions::alpha_weight)
     bool has_alpha() const { return canvas_a != nullptr; }
 };
 
