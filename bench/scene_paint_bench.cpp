@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
         if (alpha_weight > 0) po.alpha_weight = alpha_weight;
         for (const Variant& v : variants) {
             paint::SceneTarget t;
-            t.alpha = img->has_alpha;
+            t.alpha = img->has_alpha && paint::has_transparency(view_in);  // as --alpha auto
             t.linear = v.linear;
             t.refit.mantissa_bits = v.mantissa;
             t.refit.highlight_weight = v.weighted;

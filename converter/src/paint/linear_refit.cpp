@@ -128,16 +128,44 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
     const std::vector<float>& lin = code_values();
     RefitStats st;
     Mask scratch;
-    const Canvas below = canvas;  // what the strokes are drawn on
+    const size_t n = size_t(W) * H;
     const std::vector<float> weight = pixel_weights(model, opts.highlight_weight);
-    auto sse = [&](const Canvas& c) { return colour_error(model, c, weight); };
+    // The passes composite on double canvases (the exact rule rounds each blend to the nearest
+    // half, within 2^-11 of these values); only the last replay is exact, onto `canvas`. Three
+    // exact replays cost twice the paint on GoldenGate; these cost a fraction.
+    std::vector<double> below(n * 3);
+    for (size_t i = 0; i < n * 3; ++i) below[i] = lin[canvas.rgb16[i]];
+    auto composite = [&](std::vector<double>& F, const Mask& m, int64_t ox, int64_t oy, const Rgba8& col) {
+        const double c[3] = {lin[code16(col, 0)], lin[code16(col, 1)], lin[code16(col, 2)]};
+        const int64_t x0 = std::max<int64_t>(0, ox), y0 = std::max<int64_t>(0, oy);
+        const int64_t x1 = std::min<int64_t>(W, ox + int64_t(m.w)), y1 = std::min<int64_t>(H, oy + int64_t(m.h));
+        for (int64_t y = y0; y < y1; ++y) {
+            const uint8_t* ar = m.a.data() + size_t(y - oy) * m.w;
+            for (int64_t x = x0; x < x1; ++x) {
+                if (ar[x - ox] == 0) continue;
+                const double a = ar[x - ox] / 255.0;
+                double* f = &F[3 * (size_t(y) * W + size_t(x))];
+                for (int k = 0; k < 3; ++k) f[k] += a * (c[k] - f[k]);
+            }
+        }
+    };
+    auto error_of = [&](const std::vector<double>& F) {
+        double e = 0;
+        for (size_t p = 0; p < n; ++p)
+            for (int k = 0; k < 3; ++k) {
+                const double d = F[3 * p + k] - double(model.rgba[4 * p + k]);
+                e += double(weight[p]) * d * d;
+            }
+        return e;
+    };
     std::vector<Stroke> converted = strokes;
     for (Stroke& s : converted) set_colour(s, proxy_to_linear(s.color(), t, opts.mantissa_bits));
 
-    // Pass 1, forward: each stroke's least-squares colour given the exact linear canvas under it,
-    // c = sum a (255 M - (255 - a) C) / sum a^2 per channel (M model, C canvas, linear,
-    // premultiplied): the painter's 8-bit rule in linear light. Doubles summed in a fixed
-    // order: the same result on every run.
+    // Pass 1, forward: each stroke's least-squares colour given the linear canvas under it,
+    // c = sum q a (255 M - (255 - a) C) / sum q a^2 per channel (M model, C canvas, linear,
+    // premultiplied; q the pixel weight): the painter's 8-bit rule in linear light. Doubles
+    // summed in a fixed order: the same result on every run.
+    std::vector<double> F = below;
     for (size_t k = 0; k < strokes.size(); ++k) {
         Stroke& s = strokes[k];
         const Mask* m = nullptr;
@@ -158,7 +186,7 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
                 for (int c = 0; c < 3; ++c) {
                     const double mv = model.rgba[4 * p + c];
                     top[c] = std::max(top[c], mv);
-                    num[c] += q * a * (255.0 * mv - (255.0 - a) * double(lin[canvas.rgb16[3 * p + c]]));
+                    num[c] += q * a * (255.0 * mv - (255.0 - a) * F[3 * p + c]);
                 }
             }
         }
@@ -175,8 +203,7 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
             set_colour(s, converted[k].color());
             ++st.converted;
         }
-        if (Status ds = renderer.draw(canvas, s); !ds)
-            return make_error(ds.error().code, "linear refit: stroke " + std::to_string(k) + ": " + ds.error().message);
+        composite(F, *m, ox, oy, s.color());
     }
 
     // Each forward choice is optimal for the canvas right after its stroke, not for the final
@@ -184,17 +211,21 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
     // can end up closer. Start from the better of the two, then one backward sweep of
     // coordinate descent on the final picture: stroke k shows through the transmittance T of
     // the strokes above it, final = rest + c_k a_k T / 255, so the colour that minimises the
-    // final error is c_k + sum w (M - F) / sum w^2 with w = a_k T / 255. Every step lowers the
-    // final error (up to the half rounding of the exact render that follows).
-    Canvas conv = below;
-    if (Status ds = draw_all(renderer, conv, converted); !ds) return ds;
-    if (sse(conv) < sse(canvas)) {
-        strokes = converted;
-        canvas = std::move(conv);
+    // final error is c_k + sum q w (M - F) / sum q w^2 with w = a_k T / 255. Every step lowers
+    // the final error (up to the half rounding of the exact replay that follows).
+    {
+        std::vector<double> Fc = below;
+        for (size_t k = 0; k < converted.size(); ++k) {
+            const Mask* m = nullptr;
+            int64_t ox = 0, oy = 0;
+            if (Status ms = coverage(renderer, converted[k], scratch, m, ox, oy); !ms) return ms;
+            composite(Fc, *m, ox, oy, converted[k].color());
+        }
+        if (error_of(Fc) < error_of(F)) {
+            strokes = converted;
+            F = std::move(Fc);
+        }
     }
-    const size_t n = size_t(W) * H;
-    std::vector<double> F(n * 3);
-    for (size_t i = 0; i < n * 3; ++i) F[i] = lin[canvas.rgb16[i]];
     std::vector<float> T(n, 1.0f);
     for (size_t k = strokes.size(); k-- > 0;) {
         Stroke& s = strokes[k];
@@ -245,7 +276,6 @@ Status refit_linear(const LinearView& model, const ProxyTransform& t, const Head
             for (int64_t x = x0; x < x1; ++x) T[size_t(y) * W + size_t(x)] *= float(255 - ar[x - ox]) / 255.0f;
         }
     }
-    canvas = below;
     if (Status ds = draw_all(renderer, canvas, strokes); !ds) return ds;
     if (stats) *stats = st;
     return {};
