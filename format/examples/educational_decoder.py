@@ -5,7 +5,8 @@
 
 prints one line per frame, `frame live_strokes live_fnv1a64`, as tests/format/golden/MANIFEST.txt
 lists them; with --render it also renders each frame (SPEC.md 8) and adds `render_fnv1a64`, the
-FNV-1a 64 of its width * height * 3 RGB bytes. It is slow and plain on purpose: Python's standard library only, one function per
+FNV-1a 64 of its width * height * 3 RGB values (bytes, or little-endian u16 codes in colour
+encoding 1), followed on an alpha canvas by its alpha bytes. It is slow and plain on purpose: Python's standard library only, one function per
 section of SPEC.md, no caches. It decodes frame codings 0, 1 and 2. The modules live in
 educational_decoder/ next to this script.
 """
@@ -34,10 +35,10 @@ def main(argv):
             data = f.read()
         decoded = decode_frames(data)
         for index, live in decoded:
-            line = f"{index} {len(live)} {live_hash(live):016x}"
+            line = f"{index} {len(live)} {live_hash(live, decoded.header.color_encoding == 1):016x}"
             if with_render:
                 canvas = render(decoded.header, decoded.templates, live)
-                line += f" {fnv1a64(canvas.rgb):016x}"
+                line += f" {fnv1a64(canvas.frame_bytes()):016x}"
             print(line, flush=True)
         if decoded.problem:
             print(f"{path}: incomplete: {decoded.problem}", file=sys.stderr)

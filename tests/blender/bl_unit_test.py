@@ -1,4 +1,4 @@
-"""test_io.py run by Blender's Python, where numpy exists (the vectorised geometry paths)."""
+"""test_io.py and test_io_format13.py run by Blender's Python, where numpy exists (the vectorised geometry paths)."""
 
 import os
 import sys
@@ -6,7 +6,9 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import test_io  # noqa: E402
+import test_io_format13  # noqa: E402
 
 sys.argv = [sys.argv[0]]
-r = unittest.TextTestRunner(verbosity=1).run(unittest.defaultTestLoader.loadTestsFromModule(test_io))
+suite = unittest.TestSuite([unittest.defaultTestLoader.loadTestsFromModule(m) for m in (test_io, test_io_format13)])
+r = unittest.TextTestRunner(verbosity=1).run(suite)
 sys.exit(0 if r.wasSuccessful() else 1)

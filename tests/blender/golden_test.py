@@ -10,6 +10,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "blender_addon"))
 from spt_grease_pencil.io import SptError, read_file  # noqa: E402
+sys.path.insert(0, HERE)
+from reference import ref_reader  # noqa: E402  (the one-tuple-per-stroke oracle)
 
 try:
     import numpy as np
@@ -39,6 +41,9 @@ for p in golden:
             if [t.to_tuples() for t in fc.live_lists()] != list(f.live_lists()):
                 print(f"  FAIL: {name}: the numpy reader disagrees with the reference")
                 bad += 1
+        if list(ref_reader.read_file(p).live_lists()) != list(f.live_lists()):
+            print(f"  FAIL: {name}: the reader disagrees with the tuple oracle (tests/blender/reference)")
+            bad += 1
     except SptError as e:
         print(f"{name}: error: {e}")
         if not expect_error:

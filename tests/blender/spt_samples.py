@@ -116,6 +116,24 @@ def animation(frames=4, per_set=(6, 10, 14), seed=7, affines=3, curves=2, motion
     return inf, out
 
 
+def linear_animation(alpha=True, **kw):
+    """animation() as a format 1.3 file of colour encoding 1 (and an alpha canvas): every colour
+    value becomes a 16-bit half code spread over the whole range, about half of them above 1.0
+    (HDR), some subnormal, low bytes set. Deterministic like animation()."""
+    inf, frames = animation(**kw)
+    h = inf.header
+    h.alpha, h.color_encoding = alpha, model.LINEAR_HALF
+    h.set_background_values((0x3C00, 0x2E66, 0x0001))  # 1.0, about 0.1, the smallest subnormal
+
+    def code(v, k):
+        return ((v << 7) ^ (k * 0x1D3B)) % 0x7C00
+
+    for fr in frames:
+        fr.added = [model.with_color(s, tuple(code(c, k) for k, c in enumerate(model.stroke_color(s)[:3]))
+                                     + (model.stroke_color(s)[3],)) for s in fr.added]
+    return inf, frames
+
+
 def write_animation(path, **kw):
     inf, frames = animation(**kw)
     writer.write_stored(path, inf, frames)

@@ -4,6 +4,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -201,4 +202,37 @@ TEST(IoImage, FailedWriteLeavesNothing) {
     auto u = write_image(d.file("x.unknownext"), 2, 2, px.data());
     EXPECT_FALSE(u.ok());
     EXPECT_TRUE(fs::is_empty(d.path));
+}
+
+// spt plan reads half-float files through io::half_to_srgb8 instead of read_image's float
+// path; the table must give read_image's bytes for every one of the 65536 half bit patterns
+// (NaN, infinities, negatives, denormals included), in every channel position, and for gray.
+TEST(IoImage, HalfTableGivesReadImageBytesForEveryHalf) {
+    const std::array<uint8_t, 65536>* table = spt::io::half_to_srgb8();
+    ASSERT_NE(table, nullptr) << "no table: spt plan would read half files the long way";
+    TempDir d;
+    std::vector<uint16_t> rgb(65536 * 3), gray(65536);
+    for (uint32_t i = 0; i < 65536; ++i) {
+        rgb[i * 3] = uint16_t(i);
+        rgb[i * 3 + 1] = uint16_t(i * 40503u + 12345u);  // an odd multiplier: every value once
+        rgb[i * 3 + 2] = uint16_t(65535u - i);
+        gray[i] = uint16_t(i * 2654435761u);
+    }
+    write_raw(d.file("rgb.exr"), 256, 256, 3, OIIO::TypeDesc::HALF, rgb, OIIO::TypeDesc::HALF);
+    write_raw(d.file("gray.exr"), 256, 256, 1, OIIO::TypeDesc::HALF, gray, OIIO::TypeDesc::HALF);
+    auto a = read_image(d.file("rgb.exr"));
+    ASSERT_TRUE(a.ok()) << a.error().message;
+    size_t wrong = 0;
+    for (size_t k = 0; k < rgb.size(); ++k) wrong += a->rgb[k] != (*table)[rgb[k]];
+    EXPECT_EQ(wrong, 0u) << "of " << rgb.size() << " RGB samples";
+    auto g = read_image(d.file("gray.exr"));
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    wrong = 0;
+    for (size_t p = 0; p < gray.size(); ++p)
+        for (int k = 0; k < 3; ++k) wrong += g->rgb[p * 3 + size_t(k)] != (*table)[gray[p]];
+    EXPECT_EQ(wrong, 0u) << "of " << gray.size() << " gray samples";
+    EXPECT_EQ((*table)[0x3C00], 255);  // 1.0
+    EXPECT_EQ((*table)[0x7E00], 0);    // NaN
+    EXPECT_EQ((*table)[0x7C00], 255);  // +inf
+    EXPECT_EQ((*table)[0xBC00], 0);    // -1.0
 }

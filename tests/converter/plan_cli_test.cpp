@@ -53,6 +53,11 @@ TEST(PlanCli, ShotsPaintedApartJoinToTheOneProcessPainting) {
     RunResult r = run_spt(d, {"plan", seq, "-o", plan, "--max-strokes", "300", "--keyframe-interval", "4",
                               "--max-task-frames", "8", "--seed", "77", "--progress", "none"});
     ASSERT_EQ(r.code, 0) << r.err;
+    // Frames decode on every core by default: one thread writes the same plan, byte for byte.
+    r = run_spt(d, {"plan", seq, "-o", d.file("plan1.json"), "--max-strokes", "300", "--keyframe-interval", "4",
+                    "--max-task-frames", "8", "--seed", "77", "--progress", "none", "--threads", "1"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(slurp(plan) == slurp(d.file("plan1.json"))) << "the plan depends on --threads";
     auto p = spt::plan::read_plan(plan);
     ASSERT_TRUE(p.ok()) << p.error().message;
     EXPECT_EQ(p->first, 101);

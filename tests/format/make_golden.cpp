@@ -14,6 +14,7 @@
 
 #include "format/coding_random_streams.hpp"
 #include "format/golden_canonical.hpp"
+#include "spt/color.hpp"
 #include "spt/replay.hpp"
 #include "spt/spt.hpp"
 
@@ -318,6 +319,101 @@ std::vector<Case> cases() {
         c.stream.frames = {k};
         v.push_back(c);
     }
+    {   // Format 1.3: an alpha canvas (SPEC.md 8, 8.6): transparent start, premultiplied colour.
+        Case c{"alpha_rgba", "format 1.3 alpha canvas in colour encoding 0: opaque and translucent stamps, a "
+                             "supersampled affine ellipse, a curve and a polygon over a transparent canvas; then an "
+                             "inter frame with a removal, motion and a stroke of partial opacity", {}};
+        c.stream.info.header = header(64, 48, 2, 8);
+        c.stream.info.header.alpha = true;
+        Template aa = ellipse();
+        aa.supersample = 4;
+        c.stream.info.templates = {ellipse(), bitmap(8, 8), aa};
+        Frame k;
+        k.added.push_back(stamp(0, 0, 1, 16 * 20 + 8, 16 * 15 + 8, {220, 40, 30, 255}));
+        k.added.push_back(stamp(1, 1, 3, 16 * 30 + 8, 16 * 20 + 8, {20, 90, 240, 128}));
+        AffineStroke af;
+        af.tmpl = 2; af.tx = 16 * 44; af.ty = 16 * 30; af.a = 16 * 9; af.b = 16 * 3; af.c = -16 * 2; af.d = 16 * 6;
+        af.color = {250, 250, 250, 200};
+        k.added.push_back(Stroke::make_affine(af));
+        CurveStroke cv;
+        cv.color = {0, 0, 0, 255};
+        cv.points = {{16 * 5, 16 * 40, 40}, {16 * 25, 16 * 44, 16}, {16 * 60, 16 * 38, 64}};
+        k.added.push_back(Stroke::make_curve(cv));
+        PolygonStroke pg;
+        pg.color = {40, 200, 60, 160};
+        pg.supersample = 3;
+        pg.points = {{16 * 2, 16 * 2}, {16 * 14, 16 * 4 + 5}, {16 * 9, 16 * 13}};
+        k.added.push_back(Stroke::make_polygon(pg));
+        Frame i; i.index = 1; i.type = FrameType::Inter;
+        i.removed = {1};
+        i.motion.block_size = 32; i.motion.cols = 2; i.motion.rows = 2;
+        i.motion.vectors = {{16, 0}, {0, 0}, {-20, 12}, {0, 0}};
+        i.added.push_back(stamp(0, 1, 5, 16 * 50 + 8, 16 * 10 + 8, {255, 200, 0, 90}));
+        c.stream.frames = {k, i};
+        v.push_back(c);
+    }
+    // Colour encoding 1 colours from linear values (exact half codes, SPEC.md 4 and 8.6).
+    auto lin = [](float r, float g, float b, uint8_t a) {
+        Rgba8 c; c.a = a;
+        set_code16(c, 0, float_to_half_code(r)); set_code16(c, 1, float_to_half_code(g)); set_code16(c, 2, float_to_half_code(b));
+        return c;
+    };
+    {   // Format 1.3: colour encoding 1, scene-linear half codes composited in linear light.
+        Case c{"linear_hdr", "format 1.3 colour encoding 1 (scene-linear half floats): a mid-grey background, a glowing "
+                             "stamp far above 1.0 (20), deep shadows in the half subnormals, translucent strokes of every kind "
+                             "blended in linear light; then an inter frame with motion", {}};
+        c.stream.info.header = header(48, 32, 2, 8);
+        c.stream.info.header.color = ColorEncoding::LinearHalf;
+        const Rgba8 bg = lin(0.18f, 0.18f, 0.18f, 255);
+        c.stream.info.header.background = {bg.r, bg.g, bg.b};
+        c.stream.info.header.background_lo = {bg.r_lo, bg.g_lo, bg.b_lo};
+        c.stream.info.templates = {ellipse(), bitmap(6, 6)};
+        Frame k;
+        k.added.push_back(stamp(0, 0, 2, 16 * 16 + 8, 16 * 12 + 8, lin(20.0f, 12.5f, 3.0f, 255)));
+        k.added.push_back(stamp(1, 1, 0, 16 * 30 + 8, 16 * 20 + 8, lin(0.00002f, 0.0000005f, 0.001f, 255)));
+        k.added.push_back(stamp(1, 0, 6, 16 * 34 + 8, 16 * 22 + 8, lin(1.0f, 0.5f, 0.25f, 100)));
+        AffineStroke af;
+        af.tmpl = 1; af.tx = 16 * 10; af.ty = 16 * 25; af.a = 16 * 7; af.b = 0; af.c = 0; af.d = 16 * 4;
+        af.color = lin(65504.0f, 0.0f, 0.75f, 30);
+        k.added.push_back(Stroke::make_affine(af));
+        CurveStroke cv;
+        cv.color = lin(0.05f, 0.9f, 4.0f, 180);
+        cv.points = {{16 * 2, 16 * 2, 24}, {16 * 46, 16 * 30, 48}};
+        k.added.push_back(Stroke::make_curve(cv));
+        PolygonStroke pg;
+        pg.color = lin(0.3f, 0.3f, 2.5f, 255);
+        pg.supersample = 4;
+        pg.points = {{16 * 40, 16 * 1}, {16 * 47, 16 * 9}, {16 * 36, 16 * 7}};
+        k.added.push_back(Stroke::make_polygon(pg));
+        Frame i; i.index = 1; i.type = FrameType::Inter;
+        i.removed = {2, 4};
+        i.motion.block_size = 16; i.motion.cols = 3; i.motion.rows = 2;
+        i.motion.vectors = {{8, 8}, {-16, 0}, {0, 0}, {0, 0}, {3, -5}, {0, 0}};
+        i.added.push_back(stamp(0, 1, 4, 16 * 24 + 8, 16 * 16 + 8, lin(0.01f, 0.02f, 0.04f, 255)));
+        c.stream.frames = {k, i};
+        v.push_back(c);
+    }
+    {   // Format 1.3: both, as a render with transparent film gives them.
+        Case c{"linear_alpha", "format 1.3 colour encoding 1 on an alpha canvas: premultiplied half codes over a "
+                               "transparent start, HDR highlights with soft edges, a second key frame", {}};
+        c.stream.info.header = header(40, 30, 2, 4);
+        c.stream.info.header.color = ColorEncoding::LinearHalf;
+        c.stream.info.header.alpha = true;
+        c.stream.info.header.background = {0, 0, 0};
+        c.stream.info.templates = {bitmap(10, 10), ellipse()};
+        Frame k;
+        k.added.push_back(stamp(0, 0, 1, 16 * 14 + 8, 16 * 12 + 8, lin(0.6f, 0.25f, 0.1f, 255)));
+        k.added.push_back(stamp(1, 1, 2, 16 * 16 + 8, 16 * 10 + 8, lin(21.0f, 18.0f, 9.0f, 255)));
+        k.added.push_back(stamp(1, 0, 3, 16 * 26 + 8, 16 * 20 + 8, lin(0.002f, 0.004f, 0.008f, 140)));
+        Frame i; i.index = 1; i.type = FrameType::Inter;
+        i.motion.block_size = 8; i.motion.cols = 5; i.motion.rows = 4;
+        i.motion.vectors.assign(20, {4, -2});
+        i.added.push_back(stamp(0, 1, 0, 16 * 30 + 8, 16 * 8 + 8, lin(3.0f, 3.0f, 3.0f, 64)));
+        Frame k2; k2.index = 2;
+        k2.added.push_back(stamp(0, 0, 2, 16 * 5 + 8, 16 * 25 + 8, lin(0.0f, 0.0f, 0.0f, 255)));
+        c.stream.frames = {k, i, k2};
+        v.push_back(c);
+    }
     return v;
 }
 
@@ -396,15 +492,17 @@ int main(int argc, char** argv) {
     const std::string dir = argc > 1 ? argv[1] : std::string(SPT_SOURCE_DIR) + "/tests/format/golden";
     std::filesystem::create_directories(dir);
     std::string manifest =
-        "# Golden conformance files of SPEC.md 9.4 (format 1.2: files use 1.0, 1.1 or 1.2). Generated by tests/format/make_golden.cpp.\n"
+        "# Golden conformance files of SPEC.md 9.4 (format 1.3: files use 1.0 .. 1.3). Generated by tests/format/make_golden.cpp.\n"
         "# Each <name>.spt (frame coding 1) has a <name>.stored.spt twin (coding 0) with the same frames.\n"
         "# replay_*.spt use frame coding 2 (SPEC.md 7.7, format 1.1) in every frame instead of coding 1.\n"
-        "# polygons*.spt hold polygon strokes (SPEC.md 8.8, format 1.2); the others stay format 1.0/1.1.\n"
+        "# polygons*.spt hold polygon strokes (SPEC.md 8.8, format 1.2); alpha_*.spt and linear_*.spt have an\n"
+        "#   alpha canvas or colour encoding 1 (format 1.3); the others stay format 1.0/1.1.\n"
         "# live_fnv1a64: FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3) over the\n"
         "#   canonical stored-mode bytes of the live stroke list after applying the frame: a coding-0\n"
         "#   key frame body (SPEC.md 6), u32 stroke_count then the stroke records.\n"
         "# render_fnv1a64: FNV-1a 64 of the rendered frame (SPEC.md 8): width*height*3 bytes, RGB,\n"
-        "#   row-major, top row first.\n"
+        "#   row-major, top row first (colour encoding 1: each code as a little-endian u16); on an alpha\n"
+        "#   canvas followed by the width*height alpha bytes.\n"
         "# file frame live_strokes live_fnv1a64 render_fnv1a64\n";
     std::string readme = "# Golden files\n\nGenerated by `make_golden` (tests/format/make_golden.cpp); hashes in MANIFEST.txt.\n\n"
                          "| file | content |\n|---|---|\n";
@@ -436,16 +534,17 @@ int main(int argc, char** argv) {
             std::vector<Stroke> live;
             auto renderer = Renderer::create(c.stream.info.header, c.stream.info.templates);
             if (!renderer) { std::cerr << file << ": " << renderer.error().message << "\n"; return 1; }
-            Canvas canvas(c.stream.info.header.width, c.stream.info.header.height, c.stream.info.header.background);
+            Canvas canvas(c.stream.info.header);
+            const bool linear = c.stream.info.header.color == ColorEncoding::LinearHalf;
             for (const auto& f : c.stream.frames) {
                 if (auto st = apply_frame(live, f, c.stream.info.header); !st) { std::cerr << st.error().message << "\n"; return 1; }
                 // Drawn stroke by stroke (not the tiled render()), so the hash does not depend on
                 // the renderer's fast path.
-                canvas.fill(c.stream.info.header.background);
+                canvas.reset(c.stream.info.header);
                 for (const auto& s : live)
                     if (auto st = (*renderer)->draw(canvas, s); !st) { std::cerr << st.error().message << "\n"; return 1; }
                 manifest += file + " " + std::to_string(f.index) + " " + std::to_string(live.size()) + " " +
-                            hex64(fnv1a64(canonical_stored_bytes(live))) + " " + hex64(fnv1a64(canvas.rgb)) + "\n";
+                            hex64(fnv1a64(canonical_stored_bytes(live, linear))) + " " + hex64(fnv1a64(render_bytes(canvas))) + "\n";
             }
         }
     }

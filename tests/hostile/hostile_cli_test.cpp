@@ -197,6 +197,44 @@ TEST(HostileCli, SvgCanvasOf1e93IsNamedAsItIs) {
     EXPECT_EQ(names(d), Names{});
 }
 
+// ---- an export that import could not read back ----
+
+// spt export refused JSON above spt import's 256 MiB input limit only by a check nothing
+// tested. A 16384x16384 canvas has 2048x2048 motion blocks of 8 pixels; a field whose every
+// vector equals its prediction codes as one run (SPEC.md 7.5), but exports as about 109 MB of
+// "[-2047.9375, -2047.9375], ". Three such frames make a file of a few hundred bytes whose JSON
+// is about 327 MB: the refusal is exercised without writing the limit's worth to disk.
+TEST(HostileCli, ExportRefusesJsonThatImportCouldNotReadBack) {
+    TempDir d;
+    const std::string big = d.file("big.spt");
+    {
+        spt::StreamInfo info = test_info();
+        info.header.width = info.header.height = 16384;
+        auto w = spt::Writer::create(big, info);
+        ASSERT_TRUE(w.ok()) << w.error().message;
+        spt::Frame key;
+        ASSERT_TRUE((*w)->append(key).ok());
+        for (uint32_t i = 1; i <= 3; ++i) {
+            spt::Frame f;
+            f.index = i;
+            f.type = spt::FrameType::Inter;
+            f.motion.block_size = 8;
+            f.motion.cols = f.motion.rows = 2048;
+            f.motion.vectors.assign(size_t(2048) * 2048, {int16_t(-32767), int16_t(-32767)});
+            auto s = (*w)->append(f);
+            ASSERT_TRUE(s.ok()) << s.error().message;
+        }
+        ASSERT_TRUE((*w)->finish().ok());
+    }
+    ASSERT_LT(fs::file_size(big), 4096u) << "the crafted file should be small";
+    const size_t limit = size_t(256) << 20;
+    auto r = run_spt(d, {"export", big, "-o", d.file("o.json")});
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_HAS(r.err, d.file("o.json") + ": the JSON would be ");
+    EXPECT_HAS(r.err, "bytes, above the " + std::to_string(limit) + " that spt import reads back; nothing written");
+    EXPECT_EQ(names(d), Names{"big.spt"});
+}
+
 // ---- outputs: symlinks, folders ----
 
 // Every command that writes a file, as {args before the output, the output name, args after}.
@@ -291,6 +329,27 @@ TEST(HostileCli, AnUnwritablePreviewIsRefusedBeforeTheSptIsWritten) {
     EXPECT_EQ(names(d), Names{});
 }
 
+// spt paint --target-bytes coded its trials to the fixed name OUT.rate-search: two paints into
+// one folder, or a user's file of that name, collided, and the user's file was deleted. The
+// trials now go to an unnamed file: whatever has that name is untouched, nothing else appears.
+TEST(HostileCli, ATargetSizePaintLeavesOtherNamesAlone) {
+    for (const char* style : {"painterly", "cartoon"}) {
+        TempDir d;
+        { std::ofstream(d.file("o.spt.rate-search")) << "mine"; }
+        fs::create_symlink("victim.txt", d.path / "o.spt.partial");
+        auto r = run_spt(d, {"paint", input("good.png"), "-o", d.file("o.spt"), "--style", style, "--target-bytes", "700"});
+        ASSERT_EQ(r.code, 0) << style << ": " << r.err;
+        EXPECT_EQ(slurp(d.file("o.spt.rate-search")), "mine") << style;
+        EXPECT_EQ(names(d), (Names{"o.spt", "o.spt.partial", "o.spt.rate-search"})) << style;
+        EXPECT_FALSE(fs::exists(d.path / "victim.txt")) << style;
+        // The trials were measured: the still painter's search reports the size of the best
+        // trial, which the final paint (the same lambda) reproduces byte for byte.
+        if (style == std::string("painterly"))
+            EXPECT_HAS(r.err, "gives " + std::to_string(fs::file_size(d.path / "o.spt")) + " bytes");
+        EXPECT_EQ(run_spt(d, {"verify", d.file("o.spt")}).code, 0) << style;
+    }
+}
+
 // ---- signals ----
 
 // Killed mid-paint (SIGKILL cannot be caught; SIGINT's default ends the process): the output
@@ -306,4 +365,13 @@ TEST(HostileCli, AKilledPaintLeavesNothing) {
         EXPECT_TRUE(signalled) << "signal " << sig << ": the paint ended by itself (exit " << code << ")";
         EXPECT_EQ(names(d), Names{"noise.png"}) << "signal " << sig;
     }
+    // Killed in the trials of a rate search: they had no name either.
+    TempDir d;
+    const std::string img = noise_image(d);
+    int code = 0;
+    EXPECT_TRUE(run_and_signal({"paint", img, "-o", d.file("o.spt"), "--max-strokes", "16000000", "--target-bytes", "4000000",
+                                "--threads", "1"},
+                               SIGKILL, std::chrono::milliseconds(1000), &code))
+        << "the paint ended by itself (exit " << code << ")";
+    EXPECT_EQ(names(d), Names{"noise.png"});
 }

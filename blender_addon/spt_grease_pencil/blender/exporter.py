@@ -26,12 +26,11 @@ from ..io.writer import write_stored
 from ..spt_tool import pack_coded, temp_path
 from . import gp
 
-BOUNDS = np.array(colors.BOUNDS, dtype=np.float64)
-
-
-def linear_to_codes(lin) -> np.ndarray:
-    """Scene-linear floats to 8-bit sRGB codes (exact inverse of the import table)."""
-    return np.searchsorted(BOUNDS, np.asarray(lin, dtype=np.float64), side='right').astype(np.int64)
+def file_values(lin, h) -> np.ndarray:
+    """Scene-linear floats to the file's colour values: 8-bit sRGB codes (the exact inverse of
+    the import table) in colour encoding 0, the nearest half codes in colour encoding 1 (an
+    imported colour returns to its own code)."""
+    return colors.linear_to_values(lin, h.linear)
 
 
 def stream_info(obj, scene) -> StreamInfo:
@@ -105,7 +104,7 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
         base = fill_base[mi[q]]
         fc = d.fill[q].astype(np.float64)
         rgb = base[:, :3] * (1.0 - fc[:, 3:4]) + fc[:, :3] * fc[:, 3:4]
-        rgba = np.concatenate([linear_to_codes(rgb), d.alpha[q, None]], axis=1)
+        rgba = np.concatenate([file_values(rgb, h), d.alpha[q, None]], axis=1)
         qrows, valid = geometry.quads_to_rows(corners, t[q], rgba, h.sets, h.orientations, d.set_hint[q])
         rows[q] = qrows
         keep[q[~valid]] = False
@@ -113,7 +112,7 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
             warnings.append(f"{where}: {int((~valid).sum())} degenerate quad(s) left out")
     poly = ~is_quad & (grid_of[mi] >= 0)
     if poly.any():
-        _polygons(d, np.flatnonzero(poly), fill_base[mi], grid_of[mi], rows, keep, pool, where, warnings)
+        _polygons(d, np.flatnonzero(poly), fill_base[mi], grid_of[mi], rows, keep, pool, where, warnings, h)
     for i in np.flatnonzero(~is_quad & ~poly).tolist():
         if d.npoints[i] == 0:
             keep[i] = False
@@ -126,7 +125,7 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
         xy = co.astype(np.float64) * 1000.0
         widths = pr.astype(np.float64) * float(d.line_width[i])
         s = points_to_curve(zip(xy[:, 0].tolist(), (-xy[:, 2]).tolist(), widths.tolist()),
-                            tuple(linear_to_codes(rgb).tolist()) + (alpha,))
+                            tuple(file_values(rgb, h).tolist()) + (alpha,))
         if s is None:
             keep[i] = False
             warnings.append(f"{where}: a stroke out of range was left out")
@@ -136,7 +135,7 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
     return rows[keep], d.ordinal[keep]
 
 
-def _polygons(d, idx, base, grid, rows, keep, pool, where, warnings):
+def _polygons(d, idx, base, grid, rows, keep, pool, where, warnings, h):
     """Strokes `idx` of polygon materials (importer.polygon_materials) as polygon rows, all at
     once: the points are the vertices rounded to Q4 (as geometry.points_to_polygon), the colour
     the material's fill colour mixed with vertex_color_fill (as quads), the alpha the
@@ -153,7 +152,7 @@ def _polygons(d, idx, base, grid, rows, keep, pool, where, warnings):
         ok &= bad == 0
     b = base[idx]
     fc = d.fill[idx].astype(np.float64)
-    rgb = linear_to_codes(b[:, :3] * (1.0 - fc[:, 3:4]) + fc[:, :3] * fc[:, 3:4])
+    rgb = file_values(b[:, :3] * (1.0 - fc[:, 3:4]) + fc[:, :3] * fc[:, 3:4], h)
     alpha = np.clip(np.floor(255.0 * b[:, 3] + 0.5), 0, 255).astype(np.int64)
     for k, i in enumerate(idx.tolist()):
         if not ok[k]:

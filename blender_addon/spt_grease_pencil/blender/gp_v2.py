@@ -15,6 +15,11 @@ Polygons (format 1.2; closed, cyclic, solid fill, no line): hardness = 0.5 + ord
 quads, line_width 1, aspect 1; vertex_color_fill = colour. A GPv2 stroke has no fill opacity of
 its own (the shader takes the fill's alpha from the material only), so the alpha and the grid N
 live in the material: one per (alpha, N) used (polygon_material), fill_color = (1, 1, 1, alpha).
+HDR fills (format 1.3, colour encoding 1): GPv2 clamps vertex_color_fill to 0..1 (measured in
+Blender 3.4; point vertex colours are not clamped), so a quad or polygon whose colour exceeds 1
+also keeps its exact scene-linear colour in its points' vertex_color, alpha 1 (the line of a
+fill-only material is never drawn). Export takes it back while the fill still equals its clamp,
+i.e. while nobody recoloured the stroke (FrameData).
 """
 
 import bpy
@@ -135,6 +140,10 @@ def fill_frame(frame, batch: StrokeBatch):
     uvt[~fill_like, 0] = ordinal[~fill_like]
     uvt[~fill_like, 1] = 1.0
     fill = np.where(fill_like[:, None], np.asarray(batch.fill, dtype=np.float32), 0.0)
+    # HDR fills: the exact colour in the points' vertex_color (module docstring).
+    for i in np.flatnonzero(fill_like & (fill[:, :3] > 1.0).any(axis=1)).tolist():
+        exact = np.array([fill[i, 0], fill[i, 1], fill[i, 2], 1.0], dtype=np.float32)
+        pts[i].foreach_set('vertex_color', np.tile(exact, int(off[i + 1] - off[i])))
     for name, values, dtype in (("material_index", batch.material, np.int32), ("use_cyclic", fill_like, bool),
                                 ("vertex_color_fill", fill, np.float32), ("hardness", hardness, np.float32),
                                 ("line_width", np.where(quad, np.asarray(batch.set_hint) + 1, 1), np.int32),
@@ -179,6 +188,16 @@ class FrameData:
                                 np.where(uvt[:, 1] == 1.0, uvt[:, 0], -1)).astype(np.int64)
         self._pts = pts = [s.points for s in strokes]
         self.npoints = np.fromiter(map(len, pts), dtype=np.int64, count=n)
+        # HDR fills (module docstring): a fill clamped at 1 may hide its exact colour in its
+        # first point's vertex_color; it counts while the fill is still that colour's clamp.
+        for i in np.flatnonzero(self.is_imported_fill & (self.fill[:, :3] >= 1.0).any(axis=1)).tolist():
+            if self.npoints[i] == 0:
+                continue
+            vc = np.empty(4 * int(self.npoints[i]), dtype=np.float32)
+            pts[i].foreach_get('vertex_color', vc)
+            exact = vc[:3]
+            if vc[3] == 1.0 and (exact > 1.0).any() and (np.minimum(exact, 1.0) == self.fill[i, :3]).all():
+                self.fill[i, :3] = exact
         self.co4 = np.zeros((n, 12), dtype=np.float32)
         four = self.npoints == 4
         if four.all():

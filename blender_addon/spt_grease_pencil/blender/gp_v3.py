@@ -22,6 +22,8 @@ Attributes the importer writes (CURVE domain unless said):
                           3 polygon; 0 (the default of strokes drawn in Blender): none
   spt_order (INT)         the stroke's index in the file frame's drawing order
   spt_set (INT)           the stroke set of a stamp (a hint: two sets may have one size)
+Colours are FLOAT_COLOR attributes, which Blender 4.3 and 5.2 do not clamp (measured): the
+scene-linear values of colour encoding 1 files, HDR included, are stored as they are.
 Custom attributes travel with their strokes through Blender's edit operators (move, duplicate,
 delete, join), which is what makes an edited export exact. Polygon alpha and grid N live in the
 material, as in GPv2 (one material per (alpha, N): the exporter is shared by both backends).

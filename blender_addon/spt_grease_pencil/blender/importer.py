@@ -20,7 +20,12 @@ from ..spt_tool import pack_stored, temp_path
 from . import gp
 from .stroke_batch import FILL, LINE, QUAD, StrokeBatch, point_index
 
-LINEAR = np.array(colors.LINEAR, dtype=np.float32)
+
+def scene_linear(values, h):
+    """A file's colour values as Grease Pencil's scene-linear float32: the sRGB table in colour
+    encoding 0; in colour encoding 1 the half codes' own values, exactly (no conversion: GP
+    colours are scene-linear already, and every half is a float32)."""
+    return colors.values_to_linear(values, h.linear)
 
 
 def load_stored(path: str, spt_path: str):
@@ -89,8 +94,12 @@ def _scene_setup(context, info, count, start):
     if world is None:
         import bpy
         world = scene.world = bpy.data.worlds.new("spt background")
-    rgb = tuple(float(LINEAR[c]) for c in h.background)
+    rgb = tuple(float(c) for c in scene_linear(h.background_values(), h))
     world.color = rgb
+    if h.alpha:
+        # An alpha canvas: renders keep their transparency so they composite over a plate; the
+        # world colour (the file's background) is only what the viewport shows behind it.
+        scene.render.film_transparent = True
     # Blender 5.x always renders worlds through their nodes (world.color is the viewport's only).
     bg = world.node_tree.nodes.get("Background") if getattr(world, "node_tree", None) else None
     if bg is not None and getattr(world, "use_nodes", False):
@@ -257,7 +266,7 @@ def frame_batch(table, idx, h, material, fill) -> StrokeBatch:
         xy[at] = ci[:, :2].astype(np.float64) / 16.0
         width[at] = ci[:, 2].astype(np.float64) / 16.0
         opacity[at] = np.repeat(rows[k, A].astype(np.float32) / 255.0, ccounts)
-        vcol[at, 0:3] = np.repeat(LINEAR[rows[k, R:B + 1]], ccounts, axis=0)
+        vcol[at, 0:3] = np.repeat(scene_linear(rows[k, R:B + 1], h), ccounts, axis=0)
         vcol[at, 3] = 1.0
     co = np.zeros((m, 3), dtype=np.float32)
     co[:, 0] = xy[:, 0] / 1000.0
@@ -278,7 +287,7 @@ def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index, m
     is_poly = kind == POLYGON
     quad = ~(is_curve | is_poly)
     fill = np.ones((n, 4), dtype=np.float32)
-    fill[:, 0:3] = LINEAR[rows[:, R:B + 1]]
+    fill[:, 0:3] = scene_linear(rows[:, R:B + 1], h)
     material = np.where(is_curve, cmat_index, mat_of_tmpl[np.where(quad, rows[:, TMPL], 0)])
     material = np.where(is_poly, mat_of_poly[_polygon_key(rows) % mat_of_poly.shape[0]], material)
     keys = _layer_keys(rows, layering, len(h.sets))

@@ -8,7 +8,9 @@ by equality):
     curve:  (CURVE, r, g, b, a, ((x, y, width), ...))
     polygon: (POLYGON, r, g, b, a, n_grid, ((x, y), ...))   format 1.2, SPEC.md 4 and 8.8
 
-All positions and lengths are Q4 integers (1/16 pixel), as in the file.
+All positions and lengths are Q4 integers (1/16 pixel), as in the file. r, g, b are the colour
+values: 8-bit sRGB in colour encoding 0, and in colour encoding 1 (format 1.3, scene-linear) the
+16-bit half-float codes 0..0x7BFF, 256 * high byte + low byte (SPEC.md 4); a is the 8-bit opacity.
 """
 
 from dataclasses import dataclass, field
@@ -26,6 +28,9 @@ UNKNOWN_FRAME_COUNT = 0xFFFFFFFF
 MAX_POS = 1 << 24
 MAX_MATRIX = 1 << 16
 MAX_CURVE_WIDTH = 1 << 16
+MAX_HALF_CODE = 0x7BFF   # colour encoding 1: the largest code (65504), finite and not negative
+
+SRGB8, LINEAR_HALF = 0, 1   # HEAD color_encoding (SPEC.md 3.1)
 
 
 class SptError(Exception):
@@ -73,9 +78,35 @@ class Header:
     frame_count: int = UNKNOWN_FRAME_COUNT
     version_major: int = 1
     version_minor: int = 0
-    background: Tuple[int, int, int] = (255, 255, 255)
+    background: Tuple[int, int, int] = (255, 255, 255)  # encoding 1: the codes' high bytes
     sets: List[Tuple[int, int]] = field(default_factory=list)          # (width, height) px
     orientations: List[Tuple[int, int]] = field(default_factory=list)  # (cos, sin) Q14
+    # Format 1.3: HEAD flags bit 0 (the canvas has a premultiplied alpha channel and starts
+    # transparent; background is then only what a viewer shows behind it), the colour encoding
+    # and, in encoding 1, the low bytes of the background's codes.
+    alpha: bool = False
+    color_encoding: int = SRGB8
+    background_lo: Tuple[int, int, int] = (0, 0, 0)
+
+    @property
+    def linear(self) -> bool:
+        """Colour encoding 1: stroke colours are half-float codes of scene-linear light."""
+        return self.color_encoding == LINEAR_HALF
+
+    def background_values(self) -> Tuple[int, int, int]:
+        """The background as stroke colours hold it: 8-bit values, or 16-bit codes (encoding 1)."""
+        if self.linear:
+            return tuple(256 * hi + lo for hi, lo in zip(self.background, self.background_lo))
+        return tuple(self.background)
+
+    def set_background_values(self, rgb) -> None:
+        """Sets background (and background_lo in encoding 1) from 8-bit values or 16-bit codes."""
+        if self.linear:
+            self.background = tuple(int(c) >> 8 for c in rgb)
+            self.background_lo = tuple(int(c) & 255 for c in rgb)
+        else:
+            self.background = tuple(int(c) for c in rgb)
+            self.background_lo = (0, 0, 0)
 
 
 @dataclass

@@ -13,8 +13,8 @@ from typing import Iterator, List
 import numpy as np
 
 from . import chunks, state_np, strokes_np
-from .model import (INTER, KEY, Frame, Header, Limits, Motion, NeedsPack, Roi, SptError, StreamInfo,
-                    Template)
+from .model import (INTER, KEY, LINEAR_HALF, MAX_HALF_CODE, Frame, Header, Limits, Motion, NeedsPack, Roi,
+                    SptError, StreamInfo, Template)
 
 _U32 = struct.Struct("<I")
 _HEAD = struct.Struct("<HHIIIIIIB3BBBH")
@@ -37,7 +37,8 @@ class ColumnarDecoding:
     def records(self, body, pos: int, count: int, path: str, base: int, info: StreamInfo, limits: Limits):
         return strokes_np.parse_records(body, pos, count, path, base, len(info.templates),
                                         len(info.header.sets), len(info.header.orientations),
-                                        limits.max_curve_points, self.curves, limits.max_polygon_vertices)
+                                        limits.max_curve_points, self.curves, limits.max_polygon_vertices,
+                                        info.header.linear)
 
     def live_lists(self, header: Header, frames: List[Frame], limits: Limits, path: str):
         return state_np.apply_frames(header, frames, limits, path, self.curves)
@@ -74,19 +75,31 @@ def _parse_head(p, path, off, limits) -> Header:
     (vmaj, vmin, flags, w, h, fnum, fden, fcount, cenc, br, bg, bb, nsets, norients, res) = _HEAD.unpack_from(p, 0)
     if vmaj != 1:
         raise _err(path, off, f"format version {vmaj}.{vmin} is not supported (this reader knows 1.x)")
-    if flags != 0 or res != 0:
+    if flags & ~1 or res != 0:
         raise _err(path, off, "reserved HEAD fields are not 0 (unsupported file)")
+    alpha = bool(flags & 1)
     if not (1 <= w <= limits.max_width and 1 <= h <= limits.max_height and w * h <= limits.max_pixels):
         raise _err(path, off, f"canvas {w}x{h} is outside the limits")
     if fnum == 0 or fden == 0:
         raise _err(path, off, "frame rate numerator and denominator must be > 0")
-    if cenc != 0:
-        raise _err(path, off, f"colour encoding {cenc} is not supported")
+    if cenc > LINEAR_HALF:
+        raise _err(path, off, f"colour encoding {cenc} is not supported (this reader knows 0, 8-bit sRGB, "
+                              "and 1, scene-linear half floats)")
+    if (alpha or cenc == LINEAR_HALF) and vmin < 3:
+        raise _err(path, off, f"an alpha canvas or colour encoding 1 needs format 1.3, the file says 1.{vmin}")
     if not (1 <= nsets <= 16) or not (1 <= norients <= 64):
         raise _err(path, off, f"{nsets} stroke sets / {norients} orientations (allowed 1..16 / 1..64)")
     need = _HEAD.size + 4 * nsets + 4 * norients
-    if len(p) != need:
-        raise _err(path, off, f"HEAD payload is {len(p)} bytes, expected {need}")
+    tail = 4 if cenc == LINEAR_HALF else 0  # background_lo and a reserved byte (SPEC.md 3.1)
+    if len(p) != need + tail:
+        raise _err(path, off, f"HEAD payload is {len(p)} bytes, expected {need + tail}")
+    background_lo = (0, 0, 0)
+    if tail:
+        background_lo = tuple(p[need:need + 3])
+        if p[need + 3] != 0:
+            raise _err(path, off, "reserved HEAD byte after background_lo is not 0 (unsupported file)")
+        if any(256 * hi + lo > MAX_HALF_CODE for hi, lo in zip((br, bg, bb), background_lo)):
+            raise _err(path, off, "background colour code is not a finite half float >= 0 (above 0x7BFF)")
     sets = list(struct.iter_unpack("<HH", p[_HEAD.size:_HEAD.size + 4 * nsets]))
     for i, (sw, sh) in enumerate(sets):
         if not (1 <= sw <= 4096 and 1 <= sh <= 4096):
@@ -96,7 +109,8 @@ def _parse_head(p, path, off, limits) -> Header:
         if c * c + s * s > (1 << 28) + (1 << 16):
             raise _err(path, off, f"orientation {i} ({c}, {s}) is longer than unit length")
     return Header(width=w, height=h, fps_num=fnum, fps_den=fden, frame_count=fcount, version_major=vmaj,
-                  version_minor=vmin, background=(br, bg, bb), sets=sets, orientations=orients)
+                  version_minor=vmin, background=(br, bg, bb), sets=sets, orientations=orients,
+                  alpha=alpha, color_encoding=cenc, background_lo=background_lo)
 
 
 def _parse_tmpl(p, path, off, limits) -> Template:

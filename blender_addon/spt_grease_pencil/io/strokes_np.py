@@ -18,6 +18,10 @@ A polygon keeps its outline relative to P0 because it moves rigidly by P0's moti
 entry is shared by every frame the polygon lives in, and the exporter's motion search
 (state_np.find_motion) finds polygon motion with no extra code.
 
+R G B are the colour values: 8-bit in colour encoding 0, 16-bit half codes in colour encoding 1
+(format 1.3), whose stored records carry the low bytes after r, g, b, a (SPEC.md 6): `linear`
+below says which, from the header.
+
 Unused columns are always 0, so two rows are equal exactly when the strokes are (curves and
 polygons: when their pool entries are the same entry; writers that compare strokes dedupe the
 pool by content and shape).
@@ -28,7 +32,7 @@ import struct
 
 import numpy as np
 
-from .model import AFFINE, CURVE, MAX_CURVE_WIDTH, MAX_MATRIX, MAX_POS, POLYGON, STAMP, SptError
+from .model import AFFINE, CURVE, MAX_CURVE_WIDTH, MAX_HALF_CODE, MAX_MATRIX, MAX_POS, POLYGON, STAMP, SptError
 
 KIND, SET, TMPL, ORIENT, X, Y, MA, MB, MC, MD, R, G, B, A, CURVE_ID, GRID = range(16)
 NCOL = 16
@@ -37,10 +41,38 @@ STAMP_DT = np.dtype([("k", "u1"), ("s", "u1"), ("t", "u1"), ("o", "u1"), ("x", "
                      ("r", "u1"), ("g", "u1"), ("b", "u1"), ("a", "u1")])
 AFFINE_DT = np.dtype([("k", "u1"), ("t", "u1"), ("x", "<i4"), ("y", "<i4"), ("ma", "<i4"), ("mb", "<i4"),
                       ("mc", "<i4"), ("md", "<i4"), ("r", "u1"), ("g", "u1"), ("b", "u1"), ("a", "u1")])
+_LO = [("rl", "u1"), ("gl", "u1"), ("bl", "u1")]  # colour encoding 1: the codes' low bytes
+STAMP_LIN_DT = np.dtype(STAMP_DT.descr + _LO)
+AFFINE_LIN_DT = np.dtype(AFFINE_DT.descr + _LO)
 assert STAMP_DT.itemsize == 16 and AFFINE_DT.itemsize == 30
+assert STAMP_LIN_DT.itemsize == 19 and AFFINE_LIN_DT.itemsize == 33
 _CURVE_HEAD = struct.Struct("<BBBBBI")
+_CURVE_LIN_HEAD = struct.Struct("<BBBBBBBBI")      # kind, r, g, b, a, r_lo, g_lo, b_lo, n
 _POINT_DT = np.dtype([("x", "<i4"), ("y", "<i4"), ("w", "<u4")])
 _POLYGON_HEAD = struct.Struct("<BBBBBBI")  # kind, r, g, b, a, grid N, n
+_POLYGON_LIN_HEAD = struct.Struct("<BBBBBBBBBI")   # kind, r, g, b, a, r_lo, g_lo, b_lo, grid N, n
+
+
+def _split_codes(rgb):
+    """16-bit codes (.., 3) to their (high bytes, low bytes), as a record stores them."""
+    rgb = np.asarray(rgb, dtype=np.int64)
+    return rgb >> 8, rgb & 255
+
+
+def check_colours(rows, linear: bool, what: str = "stroke") -> None:
+    """Colour values a record can hold: 0..255 (encoding 0) or codes 0..0x7BFF (encoding 1); the
+    writer checks before packing, so a value never wraps silently into another colour."""
+    if rows.shape[0] == 0:
+        return
+    top = MAX_HALF_CODE if linear else 255
+    rgb = rows[:, R:B + 1]
+    a = rows[:, A]
+    bad = (rgb < 0).any(axis=1) | (rgb > top).any(axis=1) | (a < 0) | (a > 255)
+    if bad.any():
+        i = int(np.argmax(bad))
+        kind = "16-bit half code 0..0x7BFF" if linear else "8-bit value 0..255"
+        raise SptError(f"{what} {i}: colour {tuple(rows[i, R:A + 1].tolist())} is not a {kind} "
+                       f"(colour encoding {1 if linear else 0}) with opacity 0..255")
 _VERTEX_DT = np.dtype([("x", "<i4"), ("y", "<i4")])
 
 
@@ -110,9 +142,9 @@ class StrokeTable:
                 curves.append(np.asarray(s[5], dtype=np.int32).reshape(-1, 3))
         return cls(rows, curves)
 
-    def record_bytes(self) -> bytes:
+    def record_bytes(self, linear: bool = False) -> bytes:
         """The stroke records of a stored frame body (section 4), in order."""
-        return records_bytes(self.rows, self.curves)
+        return records_bytes(self.rows, self.curves, linear)
 
 
 def tables_from_lists(live_lists):
@@ -162,10 +194,33 @@ def _err(path, offset, what):
     return SptError(f"{path}: byte {offset}: {what}")
 
 
+def _colour_columns(rows, rec, linear):
+    """R G B A of records `rec`: bytes, or codes from high and low bytes (colour encoding 1)."""
+    for c, f in ((R, "r"), (G, "g"), (B, "b")):
+        rows[:, c] = rec[f]
+        if linear:
+            rows[:, c] = rows[:, c] * 256 + rec[f[0] + "l"]
+    rows[:, A] = rec["a"]
+
+
+def _bad_codes(rows, linear):
+    """Per row: a colour code above 0x7BFF (not a finite half float >= 0)."""
+    if not linear:
+        return np.zeros(rows.shape[0], dtype=bool)
+    return (rows[:, R:B + 1] > MAX_HALF_CODE).any(axis=1)
+
+
 def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: int, nsets: int,
-                  norients: int, max_curve_points: int, curves: list, max_polygon_vertices: int = 1 << 16):
+                  norients: int, max_curve_points: int, curves: list, max_polygon_vertices: int = 1 << 16,
+                  linear: bool = False):
     """Parses `count` stroke records of a stored frame body from `pos`; returns (table, pos).
+    `linear`: colour encoding 1, whose records carry three low bytes after r, g, b, a.
     Errors name the byte offset (base + position in the body) of the offending record."""
+    stamp_dt, affine_dt = (STAMP_LIN_DT, AFFINE_LIN_DT) if linear else (STAMP_DT, AFFINE_DT)
+    ssz, asz = stamp_dt.itemsize, affine_dt.itemsize
+    curve_head = _CURVE_LIN_HEAD if linear else _CURVE_HEAD
+    polygon_head = _POLYGON_LIN_HEAD if linear else _POLYGON_HEAD
+    code_error = "colour code is not a finite half float >= 0 (above 0x7BFF)"
     buf = np.frombuffer(body, dtype=np.uint8)
     n = buf.shape[0]
     pieces = []
@@ -175,38 +230,38 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
             raise _err(path, base + pos, f"frame body ends inside its stroke list ({done} of {count} strokes)")
         kind = int(buf[pos])
         if kind == STAMP:
-            run = _run_length(buf, pos, 16, min(count - done, (n - pos) // 16), STAMP)
+            run = _run_length(buf, pos, ssz, min(count - done, (n - pos) // ssz), STAMP)
             if run == 0:
                 raise _err(path, base + pos, "truncated stamp stroke")
-            rec = np.frombuffer(body, dtype=STAMP_DT, count=run, offset=pos)
+            rec = np.frombuffer(body, dtype=stamp_dt, count=run, offset=pos)
             bad = (rec["s"] >= nsets) | (rec["t"] >= ntemplates) | (rec["o"] >= norients)
             if bad.any():
                 i = int(np.argmax(bad))
                 r = rec[i]
-                raise _err(path, base + pos + 16 * i,
+                raise _err(path, base + pos + ssz * i,
                            f"stamp stroke refers to set {r['s']}, template {r['t']}, orientation {r['o']} "
                            f"(file has {nsets} sets, {ntemplates} templates, {norients} orientations)")
             bad = (np.abs(rec["x"]) > MAX_POS) | (np.abs(rec["y"]) > MAX_POS)
             if bad.any():
-                raise _err(path, base + pos + 16 * int(np.argmax(bad)), "stamp position out of range")
+                raise _err(path, base + pos + ssz * int(np.argmax(bad)), "stamp position out of range")
             rows = np.zeros((run, NCOL), dtype=np.int32)
             rows[:, SET] = rec["s"]
             rows[:, TMPL] = rec["t"]
             rows[:, ORIENT] = rec["o"]
             rows[:, X] = rec["x"]
             rows[:, Y] = rec["y"]
-            rows[:, R] = rec["r"]
-            rows[:, G] = rec["g"]
-            rows[:, B] = rec["b"]
-            rows[:, A] = rec["a"]
+            _colour_columns(rows, rec, linear)
+            bad = _bad_codes(rows, linear)
+            if bad.any():
+                raise _err(path, base + pos + ssz * int(np.argmax(bad)), code_error)
             pieces.append(rows)
-            pos += 16 * run
+            pos += ssz * run
             done += run
         elif kind == AFFINE:
-            run = _run_length(buf, pos, 30, min(count - done, (n - pos) // 30), AFFINE)
+            run = _run_length(buf, pos, asz, min(count - done, (n - pos) // asz), AFFINE)
             if run == 0:
                 raise _err(path, base + pos, "truncated affine stroke")
-            rec = np.frombuffer(body, dtype=AFFINE_DT, count=run, offset=pos)
+            rec = np.frombuffer(body, dtype=affine_dt, count=run, offset=pos)
             m = np.stack([rec["ma"], rec["mb"], rec["mc"], rec["md"]], axis=1).astype(np.int64)
             checks = ((rec["t"] >= ntemplates, "affine stroke refers to a template the file does not have"),
                       ((np.abs(rec["x"]) > MAX_POS) | (np.abs(rec["y"]) > MAX_POS), "affine translation out of range"),
@@ -214,52 +269,58 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
                       (m[:, 0] * m[:, 3] - m[:, 1] * m[:, 2] == 0, "affine matrix is singular"))
             for bad, what in checks:
                 if bad.any():
-                    raise _err(path, base + pos + 30 * int(np.argmax(bad)), what)
+                    raise _err(path, base + pos + asz * int(np.argmax(bad)), what)
             rows = np.zeros((run, NCOL), dtype=np.int32)
             rows[:, KIND] = AFFINE
             rows[:, TMPL] = rec["t"]
             rows[:, X] = rec["x"]
             rows[:, Y] = rec["y"]
             rows[:, MA:MD + 1] = m
-            rows[:, R] = rec["r"]
-            rows[:, G] = rec["g"]
-            rows[:, B] = rec["b"]
-            rows[:, A] = rec["a"]
+            _colour_columns(rows, rec, linear)
+            bad = _bad_codes(rows, linear)
+            if bad.any():
+                raise _err(path, base + pos + asz * int(np.argmax(bad)), code_error)
             pieces.append(rows)
-            pos += 30 * run
+            pos += asz * run
             done += run
         elif kind == CURVE:
-            if pos + 9 > n:
+            hs = curve_head.size
+            if pos + hs > n:
                 raise _err(path, base + pos, "truncated curve stroke")
-            _, r, g, b, a, npts = _CURVE_HEAD.unpack_from(body, pos)
+            r, g, b, a, npts = _head_colour(curve_head.unpack_from(body, pos), linear)
+            if max(r, g, b) > (MAX_HALF_CODE if linear else 255):
+                raise _err(path, base + pos, code_error)
             if npts < 1 or npts > max_curve_points:
                 raise _err(path, base + pos, f"curve stroke has {npts} points (allowed 1..{max_curve_points})")
-            if pos + 9 + 12 * npts > n:
+            if pos + hs + 12 * npts > n:
                 raise _err(path, base + pos, f"curve stroke of {npts} points runs past the frame body")
-            p = np.frombuffer(body, dtype=_POINT_DT, count=npts, offset=pos + 9)
+            p = np.frombuffer(body, dtype=_POINT_DT, count=npts, offset=pos + hs)
             if (np.abs(p["x"]) > MAX_POS).any() or (np.abs(p["y"]) > MAX_POS).any() or (p["w"] > MAX_CURVE_WIDTH).any():
                 raise _err(path, base + pos, "curve point out of range")
             row = np.zeros((1, NCOL), dtype=np.int32)
             row[0, [KIND, R, G, B, A, CURVE_ID]] = (CURVE, r, g, b, a, len(curves))
             curves.append(np.stack([p["x"], p["y"], p["w"].astype(np.int32)], axis=1))
             pieces.append(row)
-            pos += 9 + 12 * npts
+            pos += hs + 12 * npts
             done += 1
         elif kind == POLYGON:
-            if pos + 10 > n:
+            hs = polygon_head.size
+            if pos + hs > n:
                 raise _err(path, base + pos, "truncated polygon stroke")
-            _, r, g, b, a, grid, npts = _POLYGON_HEAD.unpack_from(body, pos)
+            r, g, b, a, grid, npts = _head_colour(polygon_head.unpack_from(body, pos), linear)
+            if max(r, g, b) > (MAX_HALF_CODE if linear else 255):
+                raise _err(path, base + pos, code_error)
             if grid == 1 or grid > 16:
                 raise _err(path, base + pos, f"polygon supersampling {grid} is reserved")
             if npts < 3 or npts > max_polygon_vertices:
                 raise _err(path, base + pos, f"polygon stroke has {npts} vertices (allowed 3..{max_polygon_vertices})")
-            if pos + 10 + 8 * npts > n:
+            if pos + hs + 8 * npts > n:
                 raise _err(path, base + pos, f"polygon stroke of {npts} vertices runs past the frame body")
-            v = np.frombuffer(body, dtype=_VERTEX_DT, count=npts, offset=pos + 10)
+            v = np.frombuffer(body, dtype=_VERTEX_DT, count=npts, offset=pos + hs)
             if (np.abs(v["x"]) > MAX_POS).any() or (np.abs(v["y"]) > MAX_POS).any():
                 raise _err(path, base + pos, "polygon vertex out of range")
             pieces.append(polygon_row(r, g, b, a, grid, np.stack([v["x"], v["y"]], axis=1), curves)[None, :])
-            pos += 10 + 8 * npts
+            pos += hs + 8 * npts
             done += 1
         else:
             raise _err(path, base + pos, f"unknown stroke kind {kind}")
@@ -267,13 +328,42 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
     return StrokeTable(rows, curves), pos
 
 
+def _head_colour(fields, linear):
+    """(r, g, b, a, rest...) of an unpacked curve or polygon head (kind first): codes from the
+    high and low bytes in colour encoding 1."""
+    if not linear:
+        return fields[1:]
+    r, g, b, a, rl, gl, bl = fields[1:8]
+    return (256 * r + rl, 256 * g + gl, 256 * b + bl, a) + tuple(fields[8:])
+
+
 # ---------------------------------------------------------------- table -> bytes
 
-def records_bytes(rows, curves) -> bytes:
-    """Stroke records in order; runs of one kind are packed with one structured array each."""
+def _pack_colour(rec, r, linear):
+    for f, c in (("r", R), ("g", G), ("b", B)):
+        if linear:
+            hi, lo = _split_codes(r[:, c])
+            rec[f], rec[f[0] + "l"] = hi, lo
+        else:
+            rec[f] = r[:, c]
+    rec["a"] = r[:, A]
+
+
+def _head_bytes(head, kind, row, linear, *rest):
+    if linear:
+        rgb = [row[R], row[G], row[B]]
+        return head.pack(kind, *[c >> 8 for c in rgb], row[A], *[c & 255 for c in rgb], *rest)
+    return head.pack(kind, row[R], row[G], row[B], row[A], *rest)
+
+
+def records_bytes(rows, curves, linear: bool = False) -> bytes:
+    """Stroke records in order; runs of one kind are packed with one structured array each.
+    `linear`: colour encoding 1 (R G B hold 16-bit codes; records carry their low bytes)."""
     n = rows.shape[0]
     if n == 0:
         return b""
+    check_colours(rows, linear)
+    stamp_dt, affine_dt = (STAMP_LIN_DT, AFFINE_LIN_DT) if linear else (STAMP_DT, AFFINE_DT)
     kinds = rows[:, KIND]
     cuts = np.flatnonzero(kinds[1:] != kinds[:-1]) + 1
     starts = [0] + cuts.tolist()
@@ -283,28 +373,30 @@ def records_bytes(rows, curves) -> bytes:
         k = int(kinds[a])
         r = rows[a:b]
         if k == STAMP:
-            rec = np.empty(b - a, dtype=STAMP_DT)
+            rec = np.empty(b - a, dtype=stamp_dt)
             rec["k"] = STAMP
-            for f, c in (("s", SET), ("t", TMPL), ("o", ORIENT), ("x", X), ("y", Y), ("r", R), ("g", G), ("b", B), ("a", A)):
+            for f, c in (("s", SET), ("t", TMPL), ("o", ORIENT), ("x", X), ("y", Y)):
                 rec[f] = r[:, c]
+            _pack_colour(rec, r, linear)
             out.append(rec.tobytes())
         elif k == AFFINE:
-            rec = np.empty(b - a, dtype=AFFINE_DT)
+            rec = np.empty(b - a, dtype=affine_dt)
             rec["k"] = AFFINE
-            for f, c in (("t", TMPL), ("x", X), ("y", Y), ("ma", MA), ("mb", MB), ("mc", MC), ("md", MD),
-                         ("r", R), ("g", G), ("b", B), ("a", A)):
+            for f, c in (("t", TMPL), ("x", X), ("y", Y), ("ma", MA), ("mb", MB), ("mc", MC), ("md", MD)):
                 rec[f] = r[:, c]
+            _pack_colour(rec, r, linear)
             out.append(rec.tobytes())
         elif k == CURVE:
             for row in r.tolist():
                 pts = curves[row[CURVE_ID]]
-                out.append(_CURVE_HEAD.pack(CURVE, row[R], row[G], row[B], row[A], pts.shape[0]))
+                out.append(_head_bytes(_CURVE_LIN_HEAD if linear else _CURVE_HEAD, CURVE, row, linear, pts.shape[0]))
                 out.append(np.ascontiguousarray(pts, dtype="<i4").tobytes())
         elif k == POLYGON:
             for i in range(r.shape[0]):
                 v = polygon_vertices(r, curves, i)
                 row = r[i].tolist()
-                out.append(_POLYGON_HEAD.pack(POLYGON, row[R], row[G], row[B], row[A], row[GRID], v.shape[0]))
+                out.append(_head_bytes(_POLYGON_LIN_HEAD if linear else _POLYGON_HEAD, POLYGON, row, linear,
+                                       row[GRID], v.shape[0]))
                 out.append(np.ascontiguousarray(v, dtype="<i4").tobytes())
         else:
             raise SptError(f"unknown stroke kind {k}")

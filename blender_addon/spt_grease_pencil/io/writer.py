@@ -9,16 +9,26 @@ import tempfile
 from typing import Iterable, List
 
 from . import chunks, state_np, strokes_np
-from .model import INTER, KEY, POLYGON, Frame, SptError, StreamInfo
+from .model import INTER, KEY, LINEAR_HALF, MAX_HALF_CODE, POLYGON, SRGB8, Frame, SptError, StreamInfo
 from .strokes_np import StrokeTable
 
 def head_payload(info: StreamInfo, frame_count: int, minor: int = 0) -> bytes:
-    """HEAD; `minor` is the format's minor version: 2 when a frame holds a polygon (SPEC.md 11)."""
+    """HEAD; `minor` is the format's minor version: 2 when a frame holds a polygon, 3 for an
+    alpha canvas or colour encoding 1 (SPEC.md 11)."""
     h = info.header
-    p = struct.pack("<HHIIIIIIB3BBBH", 1, minor, 0, h.width, h.height, h.fps_num, h.fps_den, frame_count,
-                    0, *h.background, len(h.sets), len(h.orientations), 0)
+    if h.color_encoding not in (SRGB8, LINEAR_HALF):
+        raise SptError(f"colour encoding {h.color_encoding} cannot be written (0 sRGB or 1 linear half)")
+    top = MAX_HALF_CODE if h.linear else 255
+    if not all(0 <= c <= top for c in h.background_values()):
+        raise SptError(f"background {h.background_values()} is not a colour of encoding {h.color_encoding}")
+    if not h.linear and any(h.background_lo):
+        raise SptError("background low bytes are set in colour encoding 0")
+    p = struct.pack("<HHIIIIIIB3BBBH", 1, minor, 1 if h.alpha else 0, h.width, h.height, h.fps_num, h.fps_den,
+                    frame_count, h.color_encoding, *h.background, len(h.sets), len(h.orientations), 0)
     p += b"".join(struct.pack("<HH", w, hh) for (w, hh) in h.sets)
     p += b"".join(struct.pack("<hh", c, s) for (c, s) in h.orientations)
+    if h.linear:
+        p += struct.pack("<3BB", *h.background_lo, 0)
     return p
 
 
@@ -42,17 +52,18 @@ def meta_payload(items) -> bytes:
     return b"".join(out)
 
 
-def _added_bytes(added) -> bytes:
+def _added_bytes(added, linear: bool) -> bytes:
     # A StrokeTable (strokes_np.py) packs itself; a list of model.py tuples becomes one first.
     if not hasattr(added, "record_bytes"):
         added = StrokeTable.from_tuples(list(added))
-    return added.record_bytes()
+    return added.record_bytes(linear)
 
 
-def frame_payload(fr: Frame) -> bytes:
+def frame_payload(fr: Frame, linear: bool = False) -> bytes:
+    """A stored FRAM payload; `linear`: colour encoding 1 (colours are 16-bit codes)."""
     head = struct.pack("<IBBH", fr.index, fr.type, 0, 0)
     if fr.type == KEY:
-        return head + struct.pack("<I", len(fr.added)) + _added_bytes(fr.added)
+        return head + struct.pack("<I", len(fr.added)) + _added_bytes(fr.added, linear)
     nrem = len(fr.removed)
     if hasattr(fr.removed, "astype"):  # numpy array
         rem = fr.removed.astype("<u4").tobytes()
@@ -69,7 +80,7 @@ def frame_payload(fr: Frame) -> bytes:
         else:
             body.append(struct.pack(f"<{2 * len(m.vectors)}h", *[c for v in m.vectors for c in v]))
     body.append(struct.pack("<I", len(fr.added)))
-    body.append(_added_bytes(fr.added))
+    body.append(_added_bytes(fr.added, linear))
     return b"".join(body)
 
 
@@ -82,8 +93,13 @@ def _has_polygon(added) -> bool:
 def write_stored(path: str, info: StreamInfo, frames: List[Frame]) -> int:
     """Writes a complete stored-mode file (HEAD, TMPL*, meta, rois, FRAM*, indx, IEND).
     Returns the number of bytes written."""
-    minor = 2 if any(_has_polygon(f.added) for f in frames) else 0
-    parts = [chunks.SIGNATURE, chunks.chunk_bytes(b"HEAD", head_payload(info, len(frames), minor))]
+    h = info.header
+    minor = 3 if (h.alpha or h.linear) else 2 if any(_has_polygon(f.added) for f in frames) else 0
+    try:
+        head = head_payload(info, len(frames), minor)
+    except SptError as e:
+        raise SptError(f"{path}: {e}") from None
+    parts = [chunks.SIGNATURE, chunks.chunk_bytes(b"HEAD", head)]
     for t in info.templates:
         parts.append(chunks.chunk_bytes(b"TMPL", tmpl_payload(t)))
     if info.metadata:
@@ -96,7 +112,11 @@ def write_stored(path: str, info: StreamInfo, frames: List[Frame]) -> int:
     offset = sum(len(p) for p in parts)
     index = []
     for fr in frames:
-        c = chunks.chunk_bytes(b"FRAM", frame_payload(fr))
+        try:
+            payload = frame_payload(fr, h.linear)
+        except SptError as e:
+            raise SptError(f"{path}: frame {fr.index}: {e}") from None
+        c = chunks.chunk_bytes(b"FRAM", payload)
         index.append(struct.pack("<IBBHQ", fr.index, fr.type, 0, 0, offset))
         parts.append(c)
         offset += len(c)

@@ -15,6 +15,7 @@
 #include "cli/paint_progress.hpp"
 #include "cli/paint_scene_still.hpp"
 #include "io/image_io.hpp"
+#include "io/trial_output.hpp"
 #include "io/sequence.hpp"
 #include "io/template_loader.hpp"
 #include "paint/painter.hpp"
@@ -164,8 +165,11 @@ int paint_still(const PaintCommandOptions& o) {
     const paint::ImageView model0{W, H, img->rgb.data()};
     if (o.target_bytes > 0) {
         // Rate control (paint/rate_control.hpp): full paints at searched lambdas, each coded to
-        // a scratch file beside the output to measure its exact size.
-        const std::string scratch = o.output + ".rate-search";
+        // a trial file that has no name (io/trial_output.hpp) to measure its exact size.
+        auto trial_file = io::TrialOutput::create(o.output);
+        if (!trial_file) return fail(trial_file.error().message);
+        WriterOptions two = wo;
+        two.atomic_rename = false;  // the trial file is never linked anywhere
         auto trial = [&](double lambda) {
             paint::PaintOptions tp = po;
             tp.lambda = lambda;
@@ -174,13 +178,12 @@ int paint_still(const PaintCommandOptions& o) {
             std::vector<Stroke> out;
             const paint::PaintStats ts = paint::paint(model0, c, **renderer, setup, tp, out);
             paint::RatePoint p{lambda, ~uint64_t(0), ts.psnr};
-            auto w = Writer::create(scratch, info, wo);
+            auto w = Writer::create(trial_file->path(), info, two);
             if (!w) return p;
             Frame f;
             f.added = std::move(out);
             f.replay = paint::replay_info(setup, tp, W, H);
             if ((*w)->append(f) && (*w)->finish()) p.bytes = (*w)->stats().total_bytes;
-            std::filesystem::remove(scratch);
             return p;
         };
         const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes, 0.03, 9, po.lambda);

@@ -31,6 +31,7 @@ int cmd_plan(int argc, char** argv) {
     po.frames = o.frames;
     po.fps = o.fps;
     po.skip_bad_frames = o.skip_bad_frames;
+    po.threads = o.paint.threads;
     po.cut_threshold = o.cut_threshold;
     po.keyframe_interval = o.keyframe_interval;
     po.max_task_frames = o.max_task_frames;

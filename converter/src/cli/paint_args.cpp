@@ -71,6 +71,11 @@ std::vector<std::string> paint_args(const PaintCommandOptions& o) {
     opt("--max-inter-strokes", std::to_string(o.max_inter_strokes));
     opt("--motion-block", std::to_string(o.block_size));
     if (o.flow_orientation) a.push_back("--flow-orientation");
+    if (o.color_encoding != "auto") opt("--color-encoding", o.color_encoding);
+    if (o.alpha != "auto") opt("--alpha", o.alpha);
+    if (!o.colorspace.empty()) opt("--colorspace", o.colorspace);
+    if (!o.ocio_config.empty()) opt("--ocio", absolute(o.ocio_config));
+    if (!o.layer.empty()) opt("--layer", o.layer);
     return a;
 }
 

@@ -9,6 +9,7 @@
 #include "cartoon/cartoon_sequence.hpp"
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
+#include "io/trial_output.hpp"
 #include "io/template_loader.hpp"
 #include "spt/version.hpp"
 #include "spt/writer.hpp"
@@ -31,9 +32,10 @@ cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
     return f;
 }
 
-// Paints `model` with `po` and writes it to `path`; returns the file's bytes.
+// Paints `model` with `po` and writes it to o.output, or only to `trial` when given; returns the
+// file's bytes.
 Result<uint64_t> paint_write(const PaintCommandOptions& o, const paint::ImageView& model, const paint::PaintSetup& setup,
-                             const Renderer& renderer, const paint::PaintOptions& po, const std::string& path,
+                             const Renderer& renderer, const paint::PaintOptions& po, const io::TrialOutput* trial,
                              Canvas& canvas, cartoon::CartoonStats& st) {
     std::vector<Stroke> strokes;
     st = cartoon::paint_cartoon(model, canvas, renderer, setup, po, fill_options(o), strokes);
@@ -56,8 +58,14 @@ Result<uint64_t> paint_write(const PaintCommandOptions& o, const paint::ImageVie
     WriterOptions wo;
     // Frames holding polygons are range coded (coding 2 replays stamps only, SPEC.md 7.7).
     wo.coding = o.stored ? Coding::Stored : Coding::Range;
+    wo.atomic_rename = trial == nullptr;  // the trial file is never linked anywhere
+    const std::string& path = trial ? trial->path() : o.output;
+    auto explain = [&](Error e) {
+        if (trial) e.message = trial->explain(e.message);
+        return e;
+    };
     auto writer = Writer::create(path, info, wo);
-    if (!writer) return writer.error();
+    if (!writer) return explain(writer.error());
     Frame frame;
     frame.added = std::move(strokes);
     Status s = (*writer)->append(frame);
@@ -66,7 +74,7 @@ Result<uint64_t> paint_write(const PaintCommandOptions& o, const paint::ImageVie
         (*writer)->abort();
         Error e = s.error();
         e.message = path + ": " + e.message;
-        return e;
+        return explain(e);
     }
     return (*writer)->stats().total_bytes;
 }
@@ -91,14 +99,15 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
     paint::PaintOptions po = o.paint;
     if (o.target_bytes > 0) {
         // --target-bytes: bisection on the PSNR target, each trial a full painting coded to a
-        // scratch file beside the output (the fill layer's tolerance follows the target).
-        const std::string scratch = o.output + ".rate-search";
+        // trial file that has no name (io/trial_output.hpp; the fill layer's tolerance follows
+        // the target).
+        auto trial = io::TrialOutput::create(o.output);
+        if (!trial) return fail(trial.error().message);
         double lo = 15, hi = 60, best = 0;
         for (int i = 0; i < 8; ++i) {
             const double mid = 0.5 * (lo + hi);
             po.target_psnr = mid;
-            auto b = paint_write(o, model, setup, **renderer, po, scratch, canvas, st);
-            std::filesystem::remove(scratch);
+            auto b = paint_write(o, model, setup, **renderer, po, &*trial, canvas, st);
             if (!b) return fail(b.error().message);
             if (*b <= o.target_bytes) { best = mid; lo = mid; } else { hi = mid; }
         }
@@ -106,7 +115,7 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
         std::fprintf(stderr, "spt paint: --target-bytes %llu: --target-psnr %.2f\n",
                      (unsigned long long)o.target_bytes, po.target_psnr);
     }
-    auto written = paint_write(o, model, setup, **renderer, po, o.output, canvas, st);
+    auto written = paint_write(o, model, setup, **renderer, po, nullptr, canvas, st);
     if (!written) return fail(written.error().message);
     const uint64_t bytes = *written;
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

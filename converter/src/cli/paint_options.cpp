@@ -2,6 +2,7 @@
 
 #include "cli/args.hpp"
 
+#include "io/color_config.hpp"
 #include "io/roi_file.hpp"
 #include "io/template_loader.hpp"
 #include "paint/rate_control.hpp"
@@ -142,6 +143,22 @@ void declare(Args& a) {
                                          "clip); reports where it landed")
         .option("outline-tolerance", "PX", "--style cartoon: how far (pixels) a polygon's outline may leave "
                                            "the traced edge (default 0.35)")
+        .group("colour and alpha")
+        .option("color-encoding", "MODE", "stroke colours: srgb8 (8-bit sRGB, as before format 1.3), linear (half "
+                                          "floats of scene-linear Rec.709: values above 1 and smooth darks, for "
+                                          "render output), auto: linear for float input (EXR, float TIFF), else srgb8",
+                0, "auto")
+        .option("alpha", "MODE", "on: paint an RGBA canvas, transparent where the input is, strokes with painted "
+                                 "edges; off: flatten the input's alpha over --background; auto: on when the input "
+                                 "has alpha", 0, "auto")
+        .option("colorspace", "NAME", "the input's colour space, a name, alias or role of the OCIO config (e.g. "
+                                      "ACEScg, sRGB, lin_rec709); default: lin_rec709 for float files, sRGB for 8- "
+                                      "and 16-bit files")
+        .option("ocio", "FILE", "the OCIO config that --colorspace names come from (default: $OCIO, else "
+                                "OpenImageIO's built-in config, which knows linear, sRGB and Rec709)")
+        .option("layer", "NAME", "the EXR layer to paint, as its channels are prefixed (e.g. ViewLayer.Combined for "
+                                 "ViewLayer.Combined.R, G, B, A); default: the unnamed R, G, B, A, else the first "
+                                 "layer with R, G, B")
         .group("sequences and video")
         .option("frames", "A-B", "paint only these frames (sequence numbers, or 0-based video frames)")
         .option("fps", "R", "frame rate, e.g. 24 or 30000/1001 (default: the video's, or 24)")
@@ -158,10 +175,13 @@ void declare(Args& a) {
             "candidate strokes, coarse to fine, each kept only if it brings the painting closer to\n"
             "the image. Writes the strokes to OUT.spt (written atomically: no half-written file).\n"
             "\n"
-            "IN is any image OpenImageIO reads (PNG, JPEG, TIFF, EXR, ...). 8/16-bit files are taken\n"
-            "as sRGB; float files (EXR, float TIFF) as scene-linear Rec.709 and converted to sRGB with\n"
-            "OpenImageIO's colour management (\"linear\" -> \"sRGB\"). Alpha is composited over\n"
-            "--background.\n"
+            "IN is any image OpenImageIO reads (PNG, JPEG, TIFF, EXR, ...), in the colour space that\n"
+            "--colorspace names (default: sRGB for 8/16-bit files, scene-linear Rec.709 for float files),\n"
+            "converted through OpenImageIO's colour management (OCIO: --ocio or $OCIO). The srgb8\n"
+            "encoding paints in 8-bit sRGB (\"linear\" -> \"sRGB\", values above 1 clip); linear keeps\n"
+            "scene-linear values. With --alpha on the canvas is transparent where IN is; otherwise alpha\n"
+            "is composited over --background. NaN, infinite and negative input values are replaced\n"
+            "(with a warning).\n"
             "\n"
             "For an image sequence or a video, OUT.spt holds key frames (the first frame, the first\n"
             "after each detected cut, and at least every --keyframe-interval frames) painted fully,\n"
@@ -170,6 +190,37 @@ void declare(Args& a) {
             "valid OUT.spt holding every finished frame.\n"
             "\n"
             "exit status: 0 success, 1 failure (unreadable input, write error), 2 bad usage\n");
+}
+
+// --color-encoding, --alpha, --colorspace, --ocio, --layer. A config or colour space name that
+// cannot work is a usage error now rather than a failure after the first frame is read.
+int parse_color_options(Args& a, PaintCommandOptions& o) {
+    auto bad = [&](const std::string& msg) { return a.usage_error(msg); };
+    if (a.has("color-encoding")) {
+        o.color_encoding = a.get("color-encoding");
+        if (o.color_encoding != "auto" && o.color_encoding != "srgb8" && o.color_encoding != "linear")
+            return bad("--color-encoding: expected auto, srgb8 or linear, got '" + o.color_encoding + "'");
+    }
+    if (a.has("alpha")) {
+        o.alpha = a.get("alpha");
+        if (o.alpha != "auto" && o.alpha != "on" && o.alpha != "off")
+            return bad("--alpha: expected auto, on or off, got '" + o.alpha + "'");
+    }
+    if (a.has("layer")) {
+        o.layer = a.get("layer");
+        if (o.layer.empty()) return bad("--layer: expected a layer name, got ''");
+    }
+    if (a.has("colorspace") && a.get("colorspace").empty()) return bad("--colorspace: expected a colour space name, got ''");
+    if (a.has("ocio") && a.get("ocio").empty()) return bad("--ocio: expected an OCIO config file, got ''");
+    o.colorspace = a.get("colorspace");
+    o.ocio_config = a.get("ocio");
+    if (!o.colorspace.empty() || !o.ocio_config.empty()) {
+        auto cs = io::color_config(o.ocio_config);
+        if (!cs) return bad((o.ocio_config.empty() ? "--colorspace: " : "--ocio: ") + cs.error().message);
+        if (!o.colorspace.empty())
+            if (auto n = io::find_colorspace(*cs, o.colorspace); !n) return bad("--colorspace: " + n.error().message);
+    }
+    return -1;
 }
 
 }  // namespace
@@ -264,6 +315,7 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
         if (!parse_u64(num, o.target_bytes) || o.target_bytes < 64)
             return bad("--target-bytes: expected a size of at least 64 bytes, optionally /s, got '" + v("target-bytes") + "'");
     }
+    if (int rc = parse_color_options(a, o); rc >= 0) return rc;
     o.frames = v("frames");
     o.fps = v("fps");
     o.skip_bad_frames = a.has("skip-bad-frames");
@@ -314,6 +366,12 @@ std::string PaintCommandOptions::canonical() const {
       << " background=" << int(background.r) << ',' << int(background.g) << ',' << int(background.b)
       << " rois=" << rois.size();
     if (style != "painterly") s << " style=" << style << " outline-tolerance=" << outline_tolerance;  // painterly files keep their bytes
+    // Only when not the defaults, so that the files of earlier versions keep their bytes.
+    if (color_encoding != "auto") s << " color-encoding=" << color_encoding;
+    if (alpha != "auto") s << " alpha=" << alpha;
+    if (!colorspace.empty()) s << " colorspace=" << colorspace;
+    if (!ocio_config.empty()) s << " ocio=custom";  // no paths (see templates=)
+    if (!layer.empty()) s << " layer=" << layer;
     return s.str();
 }
 

@@ -3,9 +3,11 @@
 
 #include <OpenImageIO/color.h>
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/half.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -165,6 +167,34 @@ Result<Image> read_image(const std::string& path, const ReadOptions& opts) {
     }
     in->close();
     return img;
+}
+
+const std::array<uint8_t, 65536>* half_to_srgb8() {
+    // read_image's steps for a sample of a file it does not composite: the half as float, the
+    // non-finite replaced, negatives clipped, OIIO's "linear" -> "sRGB" applied in the same
+    // three-channel layout, quantized. Every half value is each of the three channels of one
+    // pixel; should the processor give the channels different results (it does not), there
+    // is no table and callers read the file the long way.
+    static const std::unique_ptr<std::array<uint8_t, 65536>> table = [] {
+        const int n = 65536;
+        std::vector<float> v(size_t(n) * 3);
+        for (int i = 0; i < n; ++i) {
+            half h;
+            h.setBits(uint16_t(i));
+            float c = float(h);
+            c = std::isfinite(c) ? c : (c > 0 ? 1e9f : 0.f);
+            v[size_t(i) * 3] = v[size_t(i) * 3 + 1] = v[size_t(i) * 3 + 2] = std::max(c, 0.f);
+        }
+        transforms().to_srgb->apply(v.data(), n, 1, 3, sizeof(float), 3 * sizeof(float), 3 * sizeof(float) * size_t(n));
+        auto t = std::make_unique<std::array<uint8_t, 65536>>();
+        for (int i = 0; i < n; ++i) {
+            const uint8_t q = quantize(v[size_t(i) * 3]);
+            if (quantize(v[size_t(i) * 3 + 1]) != q || quantize(v[size_t(i) * 3 + 2]) != q) return std::unique_ptr<std::array<uint8_t, 65536>>();
+            (*t)[size_t(i)] = q;
+        }
+        return t;
+    }();
+    return table.get();
 }
 
 bool is_writable_image_name(const std::string& path) {

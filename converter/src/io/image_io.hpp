@@ -2,6 +2,7 @@
 // goes through here.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -41,6 +42,12 @@ inline constexpr const char* kLinearToSrgbText =
 // the background being converted to linear first.
 // Errors name the file.
 Result<Image> read_image(const std::string& path, const ReadOptions& opts = {});
+
+// What read_image makes of each half-float sample of a file it composites nothing into (no
+// alpha): the 8-bit sRGB value of every half bit pattern, computed once by read_image's own
+// steps, so that a reader of half files (spt plan's) can give read_image's bytes by table
+// lookup. Null if the steps cannot be tabulated per sample.
+const std::array<uint8_t, 65536>* half_to_srgb8();
 
 // Writes by extension (.png, .exr, .tif, .jpg, ...). EXR is written as half float, linear
 // (the inverse of read_image's transform), so that render output composes in VFX tools.

@@ -1,14 +1,21 @@
 #include "plan/gray_frames.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
+#include <thread>
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
+#include "plan/ordered_prefetch.hpp"
 #include "video/frame_source.hpp"
+#include "video/video_paint.hpp"
 
 namespace spt::plan {
 
@@ -36,9 +43,82 @@ private:
     video::SourceFrame frame_;
 };
 
-// Reads an 8-bit, 1- or 3-channel file without alpha as gray; false (nothing reported) for any
-// other file, which the caller then reads the painter's way.
-bool read_gray_bytes(const std::string& path, cv::Mat& gray, std::vector<uint8_t>& buf) {
+// A video file straight to gray: the painter's VideoFileSource (video/frame_source.cpp) reads
+// each frame to BGR, swaps it to RGB, copies it out, and the pass made gray of that; here BGR
+// goes to gray directly into buffers kept from frame to frame (fresh 6 MB buffers at 1080p cost
+// page faults, a quarter of the pass). The same gray: OpenCV weighs the channels in the same
+// fixed point whichever order they come in (tested against the painter's reader).
+class VideoGray final : public GrayFrames {
+public:
+    VideoGray(std::string path, io::FrameRange range) : path_(std::move(path)), range_(std::move(range)) {}
+
+    Status open() {
+        if (!cap_.open(path_)) return make_error(Code::IoError, path_ + ": OpenCV cannot open this video file");
+        fps_ = cap_.get(cv::CAP_PROP_FPS);
+        const double n = cap_.get(cv::CAP_PROP_FRAME_COUNT);
+        total_ = n > 0 && n < 1e9 ? uint64_t(n) : 0;
+        if (!range_.empty()) {
+            last_wanted_ = range_.spans.front().second;
+            for (const auto& s : range_.spans) last_wanted_ = std::max(last_wanted_, s.second);
+        }
+        return {};
+    }
+
+    Result<bool> next(long& number, cv::Mat& gray) override {
+        for (;;) {
+            if (!range_.empty() && pos_ > last_wanted_) return false;
+            if (!range_.empty() && !range_.contains(pos_)) {
+                if (!cap_.grab()) return false;  // skipped frames are not converted
+                ++pos_;
+                continue;
+            }
+            if (!cap_.read(bgr_) || bgr_.empty()) return false;
+            break;
+        }
+        number = pos_++;
+        if (bgr_.depth() != CV_8U) bgr_.convertTo(bgr_, CV_8U);
+        if (bgr_.channels() == 1) bgr_.copyTo(gray_);
+        else cv::cvtColor(bgr_, gray_, bgr_.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+        if (width_ == 0) { width_ = gray_.cols; height_ = gray_.rows; }
+        if (gray_.cols != width_ || gray_.rows != height_)
+            return make_error(Code::Corrupt, path_ + ": frame " + std::to_string(number) + " changes size");
+        gray = gray_;  // shares the buffer: the caller reads it before the next call
+        return true;
+    }
+    bool has_fps() const override { return fps_ > 0 && std::isfinite(fps_); }
+    Rational fps() const override { return video::fps_from_double(fps_); }
+    uint64_t expected_frames() const override {
+        if (range_.empty()) return total_;
+        uint64_t n = 0;
+        for (const auto& s : range_.spans) {
+            const long hi = total_ ? std::min<long>(s.second, long(total_) - 1) : s.second;
+            if (hi >= s.first) n += uint64_t(hi - s.first + 1);
+        }
+        return n;
+    }
+    std::string describe() const override { return path_; }
+
+private:
+    std::string path_;
+    io::FrameRange range_;
+    cv::VideoCapture cap_;
+    cv::Mat bgr_, gray_;
+    double fps_ = 0;
+    uint64_t total_ = 0;
+    long pos_ = 0, last_wanted_ = 0;
+    int width_ = 0, height_ = 0;
+};
+
+// A decoding thread's buffers, kept from file to file.
+struct Scratch {
+    std::vector<uint8_t> pixels, rgb;
+};
+
+// Reads a 1- or 3-channel file without alpha whose samples are all 8-bit or all half float as
+// gray, giving read_image's bytes: 8-bit samples are those bytes, and half samples map through
+// read_image's own table (io::half_to_srgb8). False (nothing reported) for any other file,
+// which the caller then reads the painter's way.
+bool read_gray_direct(const std::string& path, cv::Mat& gray, Scratch& sc) {
     OIIO::ImageSpec hint;
     hint.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(path, &hint);
@@ -47,45 +127,82 @@ bool read_gray_bytes(const std::string& path, cv::Mat& gray, std::vector<uint8_t
         return false;
     }
     const OIIO::ImageSpec& s = in->spec();
-    if (s.format != OIIO::TypeDesc::UINT8 || (s.nchannels != 1 && s.nchannels != 3) || s.alpha_channel >= 0 ||
-        s.depth > 1 || s.width <= 0 || s.height <= 0 || int64_t(s.width) * s.height > (int64_t(1) << 28))
+    const bool byte = s.format == OIIO::TypeDesc::UINT8;
+    bool half = s.format == OIIO::TypeDesc::HALF && io::half_to_srgb8();
+    for (const OIIO::TypeDesc& t : s.channelformats) half = half && t == OIIO::TypeDesc::HALF;
+    if ((!byte && !half) || (s.nchannels != 1 && s.nchannels != 3) || s.alpha_channel >= 0 || s.deep || s.depth > 1 ||
+        s.width <= 0 || s.height <= 0 || int64_t(s.width) * s.height > (int64_t(1) << 28))
         return false;
-    buf.resize(size_t(s.width) * size_t(s.height) * size_t(s.nchannels));
-    if (!in->read_image(0, 0, 0, s.nchannels, OIIO::TypeDesc::UINT8, buf.data())) {
+    const size_t samples = size_t(s.width) * size_t(s.height) * size_t(s.nchannels);
+    sc.pixels.resize(samples * (half ? 2 : 1));
+    if (!in->read_image(0, 0, 0, s.nchannels, half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8, sc.pixels.data())) {
         (void)in->geterror();
         return false;
     }
-    cv::Mat m(s.height, s.width, s.nchannels == 3 ? CV_8UC3 : CV_8UC1, buf.data());
+    uint8_t* bytes = sc.pixels.data();
+    if (half) {
+        const std::array<uint8_t, 65536>& table = *io::half_to_srgb8();
+        const auto* h = reinterpret_cast<const uint16_t*>(sc.pixels.data());
+        sc.rgb.resize(samples);
+        for (size_t i = 0; i < samples; ++i) sc.rgb[i] = table[h[i]];
+        bytes = sc.rgb.data();
+    }
+    cv::Mat m(s.height, s.width, s.nchannels == 3 ? CV_8UC3 : CV_8UC1, bytes);
     if (s.nchannels == 3) cv::cvtColor(m, gray, cv::COLOR_RGB2GRAY);
     else m.copyTo(gray);
     return true;
 }
 
+// One frame of a sequence as gray, or what is wrong with it (a function of the file alone, so
+// frames can be read on several threads).
+struct GrayFile {
+    cv::Mat gray;
+    std::string problem;
+};
+
+GrayFile read_gray_file(const std::string& pattern, long number, const std::string* path, Scratch& sc) {
+    GrayFile g;
+    if (!path) {
+        g.problem = io::format_frame(pattern, number) + ": frame " + std::to_string(number) + " is missing from the sequence";
+        return g;
+    }
+    try {
+        if (read_gray_direct(*path, g.gray, sc)) return g;
+        // The painter's reader (video/frame_source.cpp): floats, alpha, 16-bit; its messages.
+        Result<io::Image> img = io::read_image(*path);
+        if (!img) {
+            g.problem = img.error().message;
+            if (g.problem.find(*path) == std::string::npos) g.problem = *path + ": " + g.problem;
+        } else {
+            cv::Mat rgb(int(img->height), int(img->width), CV_8UC3, img->rgb.data());
+            cv::cvtColor(rgb, g.gray, cv::COLOR_RGB2GRAY);
+        }
+    } catch (const std::exception& e) {
+        g.gray.release();
+        g.problem = *path + ": " + e.what();
+    }
+    return g;
+}
+
 class SequenceGray final : public GrayFrames {
 public:
-    SequenceGray(std::string pattern, std::vector<long> numbers, std::map<long, std::string> files, bool skip)
-        : pattern_(std::move(pattern)), numbers_(std::move(numbers)), files_(std::move(files)), skip_(skip) {}
+    SequenceGray(std::string pattern, std::vector<long> numbers, std::map<long, std::string> files, bool skip, int threads)
+        : pattern_(std::move(pattern)), numbers_(std::move(numbers)), files_(std::move(files)), skip_(skip) {
+        // Decoding is nearly all of the pass; frames decode on every thread, a few ahead.
+        if (threads > 1 && numbers_.size() > 1)
+            ahead_ = std::make_unique<Prefetch>(numbers_.size(), threads, size_t(2 * threads),
+                                                [this](size_t i, Scratch& sc) { return read(i, sc); });
+    }
 
     Result<bool> next(long& number, cv::Mat& gray) override {
         if (pos_ >= numbers_.size()) return false;
-        number = numbers_[pos_++];
-        auto f = files_.find(number);
-        std::string problem;
-        if (f == files_.end()) {
-            problem = io::format_frame(pattern_, number) + ": frame " + std::to_string(number) + " is missing from the sequence";
-        } else if (!read_gray_bytes(f->second, gray, buf_)) {
-            // The painter's reader (video/frame_source.cpp): floats, alpha, 16-bit; its messages.
-            Result<io::Image> img = io::read_image(f->second);
-            if (!img) {
-                problem = img.error().message;
-                if (problem.find(f->second) == std::string::npos) problem = f->second + ": " + problem;
-            } else {
-                cv::Mat rgb(int(img->height), int(img->width), CV_8UC3, img->rgb.data());
-                cv::cvtColor(rgb, gray, cv::COLOR_RGB2GRAY);
-            }
-        }
+        const size_t i = pos_++;
+        number = numbers_[i];
+        GrayFile g = ahead_ ? ahead_->take() : read(i, scratch_);
+        std::string problem = std::move(g.problem);
+        if (problem.empty()) gray = std::move(g.gray);
         if (problem.empty() && !prev_.empty() && gray.size() != prev_.size())
-            problem = f->second + ": frame " + std::to_string(number) + " is " + std::to_string(gray.cols) + "x" +
+            problem = files_.at(number) + ": frame " + std::to_string(number) + " is " + std::to_string(gray.cols) + "x" +
                       std::to_string(gray.rows) + ", the sequence is " + std::to_string(prev_.cols) + "x" +
                       std::to_string(prev_.rows);
         if (!problem.empty()) {
@@ -103,19 +220,28 @@ public:
     std::string describe() const override { return pattern_; }
 
 private:
+    using Prefetch = OrderedPrefetch<GrayFile, Scratch>;
+
+    GrayFile read(size_t i, Scratch& sc) const {
+        auto f = files_.find(numbers_[i]);
+        return read_gray_file(pattern_, numbers_[i], f == files_.end() ? nullptr : &f->second, sc);
+    }
+
     std::string pattern_;
     std::vector<long> numbers_;
     std::map<long, std::string> files_;
     bool skip_;
     size_t pos_ = 0;
     cv::Mat prev_;
-    std::vector<uint8_t> buf_;
+    Scratch scratch_;
+    std::unique_ptr<Prefetch> ahead_;  // last: its threads stop before the members they read go
 };
 
 }  // namespace
 
 Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, const std::string& frames,
-                                                     bool skip_bad_frames) {
+                                                     bool skip_bad_frames, int threads) {
+    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
     if (io::is_sequence_pattern(input) && !io::is_video_file(input)) {
         Result<io::FrameRange> range = io::parse_frame_range(frames);
         if (!range) return range.error();
@@ -132,7 +258,14 @@ Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, c
         }
         std::vector<long> numbers = range->frames_within(first, last, 10'000'000);
         return std::unique_ptr<GrayFrames>(
-            std::make_unique<SequenceGray>(input, std::move(numbers), std::move(by_number), skip_bad_frames));
+            std::make_unique<SequenceGray>(input, std::move(numbers), std::move(by_number), skip_bad_frames, threads));
+    }
+    if (io::is_video_file(input)) {
+        Result<io::FrameRange> range = io::parse_frame_range(frames);
+        if (!range) return range.error();
+        auto v = std::make_unique<VideoGray>(input, *range);
+        if (Status st = v->open(); !st) return st.error();
+        return std::unique_ptr<GrayFrames>(std::move(v));
     }
     Result<std::unique_ptr<video::FrameSource>> src = video::open_source(input, frames, skip_bad_frames);
     if (!src) return src.error();

@@ -1,7 +1,8 @@
 // The frames of an input as the cut pass of `spt plan` needs them: 8-bit gray, in order, with
-// their source numbers. Sequences of 8-bit files without alpha are read straight as bytes
-// (the same bytes io::read_image gives, without its float strips, which were most of the
-// pass's time); everything else goes through video::FrameSource as the painter reads it.
+// their source numbers, the same gray the painter's reader gives (video::FrameSource, then
+// RGB -> gray). Sequences of 8-bit files without alpha are read straight as bytes (without
+// io::read_image's float strips, which were most of the pass's time), on several threads;
+// video files go from the decoder's BGR to gray; everything else goes through FrameSource.
 #pragma once
 
 #include <memory>
@@ -25,7 +26,9 @@ public:
     virtual std::string describe() const = 0;
 };
 
+// `threads`: files of a sequence decode on this many threads (0: every core), in order; the
+// frames are the same for any count.
 Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, const std::string& frames,
-                                                     bool skip_bad_frames);
+                                                     bool skip_bad_frames, int threads = 1);
 
 }  // namespace spt::plan

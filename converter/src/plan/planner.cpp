@@ -22,7 +22,7 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
     if (!range->empty() && (range->spans.size() != 1 || range->step(0) != 1))
         return make_error(Code::InvalidArgument, "--frames: a plan takes one range A-B of consecutive frames, got '" +
                                                      o.frames + "'");
-    Result<std::unique_ptr<GrayFrames>> src = open_gray_frames(o.input, o.frames, o.skip_bad_frames);
+    Result<std::unique_ptr<GrayFrames>> src = open_gray_frames(o.input, o.frames, o.skip_bad_frames, o.threads);
     if (!src) return src.error();
     GrayFrames& source = **src;
 

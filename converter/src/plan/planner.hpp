@@ -17,6 +17,7 @@ struct PlanOptions {
     std::string frames;              // "" or one range "A-B" of source numbers
     std::string fps;                 // "" = the container's, or 24
     bool skip_bad_frames = false;
+    int threads = 0;                 // decoding threads (0: every core); the plan never depends on it
     double cut_threshold = 6.0;      // the video painter's (VideoPaintOptions)
     int cut_window = 12;
     int keyframe_interval = 100;

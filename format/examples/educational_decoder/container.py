@@ -14,6 +14,7 @@ BITMAP, ELLIPSE, RECTANGLE, TRIANGLE = 0, 1, 2, 3
 # canvases small.
 MAX_SIDE = 16384
 MAX_PIXELS = 1 << 22
+MAX_CODE = 0x7BFF  # the largest colour code of encoding 1: finite, not negative (SPEC.md 4)
 
 
 @dataclass
@@ -24,7 +25,10 @@ class Header:
     height: int = 0
     fps: tuple = (0, 1)
     frame_count: int = 0
-    background: tuple = (0, 0, 0)
+    background: tuple = (0, 0, 0)      # encoding 1: the high bytes of the three codes
+    alpha: bool = False                # HEAD flags bit 0 (format 1.3): an alpha canvas
+    color_encoding: int = 0            # 0 8-bit sRGB, 1 scene-linear half codes (format 1.3)
+    background_lo: tuple = (0, 0, 0)   # encoding 1: the low bytes of the background's codes
     sets: list = field(default_factory=list)          # (width, height) per set
     orientations: list = field(default_factory=list)  # (cos, sin) Q14 per orientation
 
@@ -84,14 +88,17 @@ def decode_head(payload):
     h.version_minor = r.u16("version_minor")
     if h.version_major != 1:
         fail("Unsupported", f"format major version {h.version_major}")
-    if r.u32("flags") != 0:
-        fail("Unsupported", "HEAD flags are reserved")
+    flags = r.u32("flags")
+    if flags & ~1:
+        fail("Unsupported", "HEAD flags bits 1..31 are reserved")
+    h.alpha = flags & 1 == 1
     h.width = r.u32("width")
     h.height = r.u32("height")
     h.fps = (r.u32("fps_num"), r.u32("fps_den"))
     h.frame_count = r.u32("frame_count")
-    if r.u8("color_encoding") != 0:
-        fail("Unsupported", "colour encodings other than 0 are reserved")
+    h.color_encoding = r.u8("color_encoding")
+    if h.color_encoding > 1:
+        fail("Unsupported", f"colour encoding {h.color_encoding} is reserved")
     h.background = tuple(r.take(3, "background"))
     set_count = r.u8("set_count")
     orientation_count = r.u8("orientation_count")
@@ -113,6 +120,14 @@ def decode_head(payload):
         if c * c + s * s > (1 << 28) + (1 << 16):
             fail("Corrupt", "orientation entry longer than unit length")
         h.orientations.append((c, s))
+    if h.color_encoding == 1:
+        h.background_lo = tuple(r.take(3, "background_lo"))
+        if r.u8("reserved") != 0:
+            fail("Unsupported", "HEAD reserved byte after background_lo is not 0")
+        if any(256 * hi + lo > MAX_CODE for hi, lo in zip(h.background, h.background_lo)):
+            fail("Corrupt", "a background code is above 0x7BFF")
+    if (h.alpha or h.color_encoding == 1) and h.version_minor < 3:
+        fail("Corrupt", "an alpha canvas or colour encoding 1 needs version_minor 3")
     r.end()
     return h
 

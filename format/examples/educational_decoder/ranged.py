@@ -123,6 +123,7 @@ class StrokeStream:
         self.color = [[Res8() for _ in range(4)] for _ in range(3)]
         self.opaque = Context()
         self.alpha = Tree(8)
+        self.color_lo = [Tree(8) for _ in range(3)]  # [G, R, B] low bytes, colour encoding 1
         self.matrix = [SInt() for _ in range(4)]
         self.axis_aligned, self.same_scale, self.similarity = Context(), Context(), Context()
         self.matrix_shift = Tree(3)
@@ -172,8 +173,14 @@ class StrokeStream:
             a = rc.tree(self.alpha)
             if a == 255:
                 self.fail("alpha 255 coded in full")
-        self.grid[cell] = self.prev_color = (r, g, b)
-        return (r, g, b, a)
+        lo = (0, 0, 0)
+        if self.header.color_encoding == 1:
+            g_lo = rc.tree(self.color_lo[0])
+            r_lo = rc.tree(self.color_lo[1])
+            b_lo = rc.tree(self.color_lo[2])
+            lo = (r_lo, g_lo, b_lo)
+        self.grid[cell] = self.prev_color = (r, g, b)  # the high bytes only
+        return (r, g, b, a), lo
 
     def stroke(self):
         rc, prev = self.rc, self.prev_kind
@@ -206,7 +213,8 @@ class StrokeStream:
                 self.fail(f"orientation {o} coded in full")
         self.prev_orient[s] = o
         x, y = self.position(0, 0), self.position(0, 1)
-        return Stamp(s, t, o, x, y, self.colour(min(s, 3), x, y))
+        rgba, lo = self.colour(min(s, 3), x, y)
+        return Stamp(s, t, o, x, y, rgba, lo=lo)
 
     def affine(self):
         rc = self.rc
@@ -249,7 +257,8 @@ class StrokeStream:
             self.fail("a special matrix form coded in full")
         if a * d - b * c == 0:
             self.fail("singular matrix")
-        return Affine(t, tx, ty, a, b, c, d, self.colour(0, tx, ty))
+        rgba, lo = self.colour(0, tx, ty)
+        return Affine(t, tx, ty, a, b, c, d, rgba, lo=lo)
 
     def curve(self):
         rc = self.rc
@@ -271,11 +280,13 @@ class StrokeStream:
             if not 0 <= w <= 1 << 16:
                 self.fail("curve width out of range")
             points.append([x, y, w])
-        return Curve(self.colour(0, points[0][0], points[0][1]), points)
+        rgba, lo = self.colour(0, points[0][0], points[0][1])
+        return Curve(rgba, points, lo=lo)
 
     def polygon(self):
         grid, vertices = decode_polygon(self)
-        return Polygon(self.colour(0, vertices[0][0], vertices[0][1]), grid, vertices)
+        rgba, lo = self.colour(0, vertices[0][0], vertices[0][1])
+        return Polygon(rgba, grid, vertices, lo=lo)
 
 
 def decode_strokes(data, count, header, template_count, what):

@@ -1,27 +1,78 @@
 """Rendering (SPEC.md 8): coverage of each stroke kind, compositing, a whole frame.
 
-A canvas is a bytearray of width * height * 3 bytes, RGB, row-major, top row first."""
+A canvas holds width * height pixels, row-major, top row first: three colour values each
+(8-bit values in colour encoding 0, 16-bit half codes in colour encoding 1) and, on an alpha
+canvas, an 8-bit alpha value each."""
 from .container import BITMAP, ELLIPSE, RECTANGLE
-from .strokes import AFFINE, CURVE, STAMP
+from .strokes import AFFINE, CURVE, STAMP, codes
+
+
+# ---- 8.6 colour encoding 1: half codes and linear values ----
+
+def lin(h):
+    """A half code's linear value in units of 2^-24."""
+    e, m = h >> 10, h & 1023
+    return m if e == 0 else (1024 + m) << (e - 1)
+
+
+def code(L):
+    """The code whose lin() is nearest to L, the even one of two equally near."""
+    if L < 2048:
+        return L
+    s = L.bit_length() - 11
+    q = L >> s
+    r = L - (q << s)
+    if r > 1 << (s - 1) or (r == 1 << (s - 1) and q % 2 == 1):
+        q += 1
+    if q == 2048:
+        q, s = 1024, s + 1
+    return ((s + 1) << 10) | (q - 1024)
 
 
 class Canvas:
-    def __init__(self, width, height, background):
-        self.width, self.height = width, height
-        self.rgb = bytearray(bytes(background) * (width * height))
+    """The canvas of SPEC.md 8: `rgb` holds 3 values a pixel (bytes, or codes in colour
+    encoding 1), `alpha` one byte a pixel on an alpha canvas, else None."""
+
+    def __init__(self, header):
+        self.width, self.height = header.width, header.height
+        self.linear = header.color_encoding == 1
+        n = self.width * self.height
+        if header.alpha:
+            start = (0, 0, 0)  # an alpha canvas starts transparent, all planes 0
+            self.alpha = bytearray(n)
+        else:
+            start = tuple(header.background)
+            if self.linear:
+                start = tuple(256 * hi + lo for hi, lo in zip(header.background, header.background_lo))
+            self.alpha = None
+        self.rgb = list(start) * n if self.linear else bytearray(bytes(start) * n)
 
     def pixel(self, x, y):
         i = 3 * (y * self.width + x)
         return self.rgb[i], self.rgb[i + 1], self.rgb[i + 2]
 
-    def blend(self, x, y, cov, rgba):
-        """8.6: composites colour rgba with coverage cov onto pixel (x, y)."""
+    def blend(self, x, y, cov, rgba, src):
+        """8.6: composites a stroke's colour with coverage cov onto pixel (x, y); `rgba` holds
+        the opacity A, `src` the three source values (bytes, or codes in colour encoding 1)."""
         alpha = (cov * rgba[3] + 127) // 255
         if alpha == 0:
             return
-        i = 3 * (y * self.width + x)
+        p = y * self.width + x
+        i = 3 * p
         for k in range(3):
-            self.rgb[i + k] = (self.rgb[i + k] * (255 - alpha) + rgba[k] * alpha + 127) // 255
+            if self.linear:
+                L = (lin(self.rgb[i + k]) * (255 - alpha) + lin(src[k]) * alpha + 127) // 255
+                self.rgb[i + k] = code(L)
+            else:
+                self.rgb[i + k] = (self.rgb[i + k] * (255 - alpha) + src[k] * alpha + 127) // 255
+        if self.alpha is not None:  # the alpha channel: a colour channel whose source is 255
+            self.alpha[p] = (self.alpha[p] * (255 - alpha) + 255 * alpha + 127) // 255
+
+    def frame_bytes(self):
+        """The bytes render_fnv1a64 hashes (SPEC.md 9.4): R, G, B of every pixel (each code a
+        little-endian u16 in colour encoding 1), then the alpha plane on an alpha canvas."""
+        out = b"".join(v.to_bytes(2, "little") for v in self.rgb) if self.linear else bytes(self.rgb)
+        return out + (bytes(self.alpha) if self.alpha is not None else b"")
 
 
 def sample_offsets(grid):
@@ -201,12 +252,13 @@ def coverage(header, templates, s):
 
 
 def draw(canvas, header, templates, s):
+    src = codes(s) if canvas.linear else s.rgba[:3]
     for x, y, cov in coverage(header, templates, s):
-        canvas.blend(x, y, cov, s.rgba)
+        canvas.blend(x, y, cov, s.rgba, src)
 
 
 def render(header, templates, live):
-    canvas = Canvas(header.width, header.height, header.background)
+    canvas = Canvas(header)
     for s in live:
         draw(canvas, header, templates, s)
     return canvas

@@ -119,6 +119,8 @@ def decode_domain(rc, cx, W, H):
 
 def decode_replay(body, key, header, templates, prev_live, what):
     """Returns (removed, motion, added) of a coding-2 body."""
+    if header.alpha or header.color_encoding != 0:
+        fail("Corrupt", f"{what}: frame coding 2 in a file with an alpha canvas or colour encoding 1")
     prefix = BodyPrefix(body, key, header, what)
     removed, motion, base = [], None, []
     if not key:
@@ -137,7 +139,7 @@ def decode_replay(body, key, header, templates, prev_live, what):
     drawn = flags & 1
 
     # The starting canvas: the background and the live list after removals and motion.
-    canvas = Canvas(header.width, header.height, header.background)
+    canvas = Canvas(header)
     for s in base:
         draw(canvas, header, templates, s)
 

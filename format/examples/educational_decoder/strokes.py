@@ -8,6 +8,7 @@ from .errors import fail
 STAMP, AFFINE, CURVE, POLYGON = 0, 1, 2, 3
 COORD_MAX = 1 << 24   # |x|, |y|, |tx|, |ty| (Q4)
 MATRIX_MAX = 1 << 16  # |a|, |b|, |c|, |d|
+MAX_CODE = 0x7BFF     # colour encoding 1: the largest code, finite and not negative
 WIDTH_MAX = 1 << 16   # curve width (Q4)
 
 
@@ -20,6 +21,7 @@ class Stamp:
     y: int
     rgba: tuple
     kind: int = STAMP
+    lo: tuple = (0, 0, 0)  # colour encoding 1: the low bytes R_lo, G_lo, B_lo (SPEC.md 4)
 
 
 @dataclass
@@ -33,6 +35,7 @@ class Affine:
     d: int
     rgba: tuple
     kind: int = AFFINE
+    lo: tuple = (0, 0, 0)
 
 
 @dataclass
@@ -40,6 +43,7 @@ class Curve:
     rgba: tuple
     points: list = field(default_factory=list)  # [x, y, width] lists
     kind: int = CURVE
+    lo: tuple = (0, 0, 0)
 
 
 @dataclass
@@ -48,6 +52,7 @@ class Polygon:
     grid: int  # the supersampling grid N: 0 or 2..16
     vertices: list = field(default_factory=list)  # [x, y] lists
     kind: int = POLYGON
+    lo: tuple = (0, 0, 0)
 
 
 def check_coord(v, what):
@@ -55,8 +60,15 @@ def check_coord(v, what):
         fail("Corrupt", f"{what}: coordinate {v} is outside +-2^24")
 
 
+def codes(s):
+    """Colour encoding 1: the stroke's three 16-bit codes, 256 * high byte + low byte."""
+    return tuple(256 * hi + lo for hi, lo in zip(s.rgba[:3], s.lo))
+
+
 def check_stroke(s, header, template_count, what):
     """The value ranges of SPEC.md 4 (and the table sizes of HEAD)."""
+    if header.color_encoding == 1 and max(codes(s)) > MAX_CODE:
+        fail("Corrupt", f"{what}: colour code above 0x7BFF (not a finite half float >= 0)")
     if s.kind == STAMP:
         if s.set >= len(header.sets) or s.template >= template_count or s.orient >= len(header.orientations):
             fail("Corrupt", f"{what}: stamp set, template or orientation out of range")
@@ -89,16 +101,18 @@ def check_stroke(s, header, template_count, what):
             check_coord(y, what)
 
 
-def stored_record(s):
-    """A stroke's coding-0 record (SPEC.md 6), its kind byte first."""
+def stored_record(s, linear=False):
+    """A stroke's coding-0 record (SPEC.md 6), its kind byte first. In colour encoding 1
+    (`linear`) the colour's r, g, b, a bytes are followed by r_lo, g_lo, b_lo."""
+    colour = bytes(s.rgba) + (bytes(s.lo) if linear else b"")
     if s.kind == STAMP:
-        return struct.pack("<BBBBii4B", STAMP, s.set, s.template, s.orient, s.x, s.y, *s.rgba)
+        return struct.pack("<BBBBii", STAMP, s.set, s.template, s.orient, s.x, s.y) + colour
     if s.kind == AFFINE:
-        return struct.pack("<BBiiiiii4B", AFFINE, s.template, s.tx, s.ty, s.a, s.b, s.c, s.d, *s.rgba)
+        return struct.pack("<BBiiiiii", AFFINE, s.template, s.tx, s.ty, s.a, s.b, s.c, s.d) + colour
     if s.kind == CURVE:
-        out = struct.pack("<B4BI", CURVE, *s.rgba, len(s.points))
+        out = bytes([CURVE]) + colour + struct.pack("<I", len(s.points))
         return out + b"".join(struct.pack("<iiI", x, y, w) for x, y, w in s.points)
-    out = struct.pack("<B4BBI", POLYGON, *s.rgba, s.grid, len(s.vertices))
+    out = bytes([POLYGON]) + colour + struct.pack("<BI", s.grid, len(s.vertices))
     return out + b"".join(struct.pack("<ii", x, y) for x, y in s.vertices)
 
 
@@ -109,9 +123,9 @@ def fnv1a64(data):
     return h
 
 
-def live_hash(live):
+def live_hash(live, linear=False):
     """The manifest's live_fnv1a64: FNV-1a 64 of the live list as a coding-0 key frame body."""
-    return fnv1a64(struct.pack("<I", len(live)) + b"".join(stored_record(s) for s in live))
+    return fnv1a64(struct.pack("<I", len(live)) + b"".join(stored_record(s, linear) for s in live))
 
 
 # ---- SPEC.md 5: applying a frame ----
@@ -158,9 +172,9 @@ def move(s, motion, what):
 
 def copy_stroke(s):
     if s.kind == CURVE:
-        return Curve(s.rgba, [list(p) for p in s.points])
+        return Curve(s.rgba, [list(p) for p in s.points], lo=s.lo)
     if s.kind == POLYGON:
-        return Polygon(s.rgba, s.grid, [list(v) for v in s.vertices])
+        return Polygon(s.rgba, s.grid, [list(v) for v in s.vertices], lo=s.lo)
     return type(s)(**{k: getattr(s, k) for k in s.__dataclass_fields__})
 
 

@@ -16,6 +16,18 @@ _STAMP = struct.Struct("<BBBBiiBBBB")          # kind included: the tuple is the
 _AFFINE = struct.Struct("<BBiiiiiiBBBB")
 _CURVE_HEAD = struct.Struct("<BBBBBI")
 _POLYGON_HEAD = struct.Struct("<BBBBBBI")   # kind, r, g, b, a, grid N, n (format 1.2)
+# Colour encoding 1 (format 1.3): r, g, b, a, then the low bytes r_lo, g_lo, b_lo of the codes.
+_STAMP_LIN = struct.Struct("<BBBBiiBBBBBBB")
+_AFFINE_LIN = struct.Struct("<BBiiiiiiBBBBBBB")
+_CURVE_LIN_HEAD = struct.Struct("<BBBBBBBBI")
+_POLYGON_LIN_HEAD = struct.Struct("<BBBBBBBBBI")
+MAX_HALF_CODE = 0x7BFF
+
+
+def _codes(fields, at):
+    """fields with r, g, b at `at` as 16-bit codes (high bytes there, low bytes after a)."""
+    r, g, b, a, rl, gl, bl = fields[at:at + 7]
+    return fields[:at] + (256 * r + rl, 256 * g + gl, 256 * b + bl, a) + fields[at + 7:]
 
 
 class TupleDecoding:
@@ -74,6 +86,9 @@ def parse_strokes(body, pos: int, count: int, path: str, base: int, info: Stream
     norients = len(info.header.orientations)
     out = []
     append = out.append
+    linear = info.header.color_encoding == 1
+    if linear:
+        return _parse_linear(body, pos, count, path, base, info, limits)
     stamp_unpack = _STAMP.unpack_from
     for _ in range(count):
         if pos >= n:
@@ -127,6 +142,46 @@ def parse_strokes(body, pos: int, count: int, path: str, base: int, info: Stream
         else:
             raise _err(path, base + pos, f"unknown stroke kind {kind}")
         append(s)
+    return out, pos
+
+
+def _parse_linear(body, pos, count, path, base, info, limits):
+    """Colour encoding 1 records, plainly: read each as the encoding-0 record would be read with
+    the three low bytes taken out after the opacity, then combine them into codes."""
+    n = len(body)
+    out = []
+    heads = {STAMP: (_STAMP_LIN, 6), AFFINE: (_AFFINE_LIN, 8), CURVE: (_CURVE_LIN_HEAD, 1), POLYGON: (_POLYGON_LIN_HEAD, 1)}
+    for _ in range(count):
+        if pos >= n:
+            raise _err(path, base + pos, f"frame body ends inside its stroke list ({len(out)} of {count} strokes)")
+        kind = body[pos]
+        if kind not in heads:
+            raise _err(path, base + pos, f"unknown stroke kind {kind}")
+        st, at = heads[kind]
+        if pos + st.size > n:
+            raise _err(path, base + pos, "truncated stroke")
+        s = _codes(st.unpack_from(body, pos), at)
+        if max(s[at:at + 3]) > MAX_HALF_CODE:
+            raise _err(path, base + pos, "colour code is not a finite half float >= 0 (above 0x7BFF)")
+        start, pos = pos, pos + st.size
+        if kind in (STAMP, AFFINE):
+            _check_stroke(s, path, base + start, len(info.templates), len(info.header.sets),
+                          len(info.header.orientations), limits)
+        elif kind == CURVE:
+            npts = s[5]
+            if npts < 1 or npts > limits.max_curve_points or pos + 12 * npts > n:
+                raise _err(path, base + start, f"curve stroke of {npts} points is out of range or runs past the body")
+            pts = tuple(struct.iter_unpack("<iiI", body[pos:pos + 12 * npts]))
+            pos += 12 * npts
+            s = s[:5] + (pts,)
+        else:
+            grid, npts = s[5], s[6]
+            if grid == 1 or grid > 16 or npts < 3 or npts > limits.max_polygon_vertices or pos + 8 * npts > n:
+                raise _err(path, base + start, "polygon stroke out of range or runs past the body")
+            pts = tuple(struct.iter_unpack("<ii", body[pos:pos + 8 * npts]))
+            pos += 8 * npts
+            s = s[:6] + (pts,)
+        out.append(s)
     return out, pos
 
 

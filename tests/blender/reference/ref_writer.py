@@ -12,7 +12,16 @@ _AFFINE = struct.Struct("<BBiiiiiiBBBB")
 _CURVE_HEAD = struct.Struct("<BBBBBI")
 
 
-def strokes_bytes(strokes: Iterable) -> bytes:
+def _split(s, at):
+    """The tuple with the codes r, g, b at `at` split as a colour encoding 1 record stores them:
+    high bytes, a, low bytes."""
+    r, g, b, a = s[at:at + 4]
+    return s[:at] + (r >> 8, g >> 8, b >> 8, a, r & 255, g & 255, b & 255) + s[at + 4:]
+
+
+def strokes_bytes(strokes: Iterable, linear: bool = False) -> bytes:
+    if linear:
+        return b"".join(_linear_record(s) for s in strokes)
     out = []
     append = out.append
     sp, ap = _STAMP.pack, _AFFINE.pack
@@ -34,6 +43,21 @@ def strokes_bytes(strokes: Iterable) -> bytes:
             raise SptError(f"unknown stroke kind {k}")
     return b"".join(out)
 
+
+
+def _linear_record(s) -> bytes:
+    k = s[0]
+    if k == STAMP:
+        return struct.pack("<BBBBiiBBBBBBB", *_split(s, 6))
+    if k == AFFINE:
+        return struct.pack("<BBiiiiiiBBBBBBB", *_split(s, 8))
+    if k == CURVE:
+        t = _split(s, 1)
+        return struct.pack("<BBBBBBBBI", *t[:8], len(s[5])) + b"".join(struct.pack("<iiI", *p) for p in s[5])
+    if k == POLYGON:
+        t = _split(s, 1)
+        return struct.pack("<BBBBBBBBBI", *t[:8], s[5], len(s[6])) + b"".join(struct.pack("<ii", *p) for p in s[6])
+    raise SptError(f"unknown stroke kind {k}")
 
 
 def frames_from_lists(live_lists: Iterable[list]) -> List[Frame]:
