@@ -150,7 +150,8 @@ void declare(Args& a) {
                 0, "auto")
         .option("alpha", "MODE", "on: paint an RGBA canvas, transparent where the input is, strokes with painted "
                                  "edges; off: flatten the input's alpha over --background; auto: on when the input "
-                                 "has alpha", 0, "auto")
+                                 "has an alpha channel that is not opaque everywhere (a sequence: its first file)",
+                0, "auto")
         .option("colorspace", "NAME", "the input's colour space, a name, alias or role of the OCIO config (e.g. "
                                       "ACEScg, sRGB, lin_rec709); default: lin_rec709 for float files, sRGB for 8- "
                                       "and 16-bit files")

@@ -43,7 +43,7 @@ struct PaintCommandOptions {
 
     // Compositing-grade output (format 1.3, issue 17).
     std::string color_encoding = "auto";  // --color-encoding auto|srgb8|linear (auto: linear for float input)
-    std::string alpha = "auto";           // --alpha auto|on|off (auto: on when the input has alpha)
+    std::string alpha = "auto";           // --alpha auto|on|off (auto: on when the input's alpha is not all opaque)
     std::string colorspace;               // --colorspace NAME: the input's colour space (io::SceneReadOptions)
     std::string ocio_config;              // --ocio FILE: an OCIO config (default $OCIO)
     std::string layer;                    // --layer NAME: the EXR layer to paint
