@@ -95,6 +95,29 @@ TEST(PaintColorFlags, BadValuesAreUsageErrorsNamingTheFlag) {
     EXPECT_NE(slurp(d.file("env.err")).find("studio.ocio"), std::string::npos) << slurp(d.file("env.err"));
 }
 
+// Blender 5 sets $OCIO to its own config, newer than this OpenColorIO reads, for the spt it
+// starts: a $OCIO that cannot be loaded falls back to the built-in config with a warning (an
+// explicit --ocio stays an error), and the painting is what it is without $OCIO.
+TEST(PaintColorFlags, UnloadableOcioEnvironmentFallsBackWithAWarning) {
+    require_tool();
+    TempDir d;
+    const std::string in = write_ppm(d), bad = d.file("newer.ocio");
+    std::ofstream(bad) << "ocio_profile_version: 99\n";
+    auto paint = [&](const std::string& env, const std::string& out, const std::string& extra) {
+        const std::string cmd = env + shell_quote(SPT_TOOL) + " paint " + shell_quote(in) + " -o " + shell_quote(d.file(out)) +
+                                " --seed 3 --max-strokes 200 --alpha on --progress none " + extra + " 2>" +
+                                shell_quote(d.file(out + ".err"));
+        return WEXITSTATUS(std::system(cmd.c_str()));
+    };
+    ASSERT_EQ(paint("env -u OCIO ", "plain.spt", ""), 0) << slurp(d.file("plain.spt.err"));
+    ASSERT_EQ(paint("OCIO=" + shell_quote(bad) + " ", "env.spt", ""), 0) << slurp(d.file("env.spt.err"));
+    const std::string err = slurp(d.file("env.spt.err"));
+    EXPECT_NE(err.find("newer.ocio"), std::string::npos) << err;
+    EXPECT_NE(err.find("built-in config instead"), std::string::npos) << err;
+    EXPECT_EQ(slurp(d.file("plain.spt")), slurp(d.file("env.spt")));
+    EXPECT_EQ(paint("env -u OCIO ", "flag.spt", "--ocio " + shell_quote(bad)), 2);
+}
+
 TEST(PaintColorFlags, HelpDescribesThem) {
     require_tool();
     TempDir d;

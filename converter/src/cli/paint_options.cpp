@@ -219,7 +219,8 @@ int parse_color_options(Args& a, PaintCommandOptions& o) {
         auto cs = io::color_config(o.ocio_config);
         if (!cs) return bad((o.ocio_config.empty() ? "--colorspace: " : "--ocio: ") + cs.error().message);
         if (!o.colorspace.empty())
-            if (auto n = io::find_colorspace(*cs, o.colorspace); !n) return bad("--colorspace: " + n.error().message);
+            if (auto n = io::find_colorspace(*cs, o.colorspace); !n)
+                return bad("--colorspace: " + n.error().message + (cs->warning.empty() ? "" : " (" + cs->warning + ")"));
     }
     return -1;
 }

@@ -78,22 +78,39 @@ Result<ColorSetup> color_config(const std::string& ocio_path) {
 
     ColorSetup cs;
     const std::string what = ocio_path.empty() ? "$OCIO config '" + path + "'" : "OCIO config '" + path + "'";
-    if (path.empty()) {
-        // ColorConfig("") reads $OCIO itself; it is unset or empty here, so this is the built-in.
+    auto builtin = [&] {
+        // ColorConfig("") reads $OCIO itself: hide it, so that this is the built-in config.
+        const char* env = std::getenv("OCIO");
+        const std::string saved = env ? env : "";
+        if (env) ::unsetenv("OCIO");
         cs.config = std::make_shared<const OIIO::ColorConfig>("");
+        if (env) ::setenv("OCIO", saved.c_str(), 1);
         cs.source = "OpenImageIO's built-in config";
         cs.builtin = true;
+    };
+    Status loaded;
+    if (path.empty()) {
+        builtin();
     } else {
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec))
-            return make_error(Code::IoError, what + ": no such file");
-        if (!OIIO::ColorConfig::supportsOpenColorIO())
-            return make_error(Code::Unsupported, what + ": this OpenImageIO is built without OpenColorIO");
-        auto c = std::make_shared<OIIO::ColorConfig>(path);
-        if (c->has_error() || c->getNumColorSpaces() <= 0)
-            return make_error(Code::Corrupt, what + ": cannot load it: " + first_line(c->geterror()));
-        cs.config = std::move(c);
-        cs.source = path;
+        if (!std::filesystem::is_regular_file(path, ec)) {
+            loaded = make_error(Code::IoError, what + ": no such file");
+        } else if (!OIIO::ColorConfig::supportsOpenColorIO()) {
+            loaded = make_error(Code::Unsupported, what + ": this OpenImageIO is built without OpenColorIO");
+        } else {
+            auto c = std::make_shared<OIIO::ColorConfig>(path);
+            if (c->has_error() || c->getNumColorSpaces() <= 0)
+                loaded = make_error(Code::Corrupt, what + ": cannot load it: " + first_line(c->geterror()));
+            cs.config = std::move(c);
+            cs.source = path;
+        }
+    }
+    if (!loaded) {
+        // An explicit --ocio is the user's word; $OCIO is often set by another program for its
+        // own, newer config (Blender 5 sets it for the processes it starts): fall back, saying so.
+        if (!ocio_path.empty()) return loaded.error();
+        builtin();
+        cs.warning = loaded.error().message + "; using OpenImageIO's built-in config instead";
     }
     (void)OIIO::geterror();  // a failed or default load leaves a global message behind
     cache.emplace(path, cs);

@@ -19,11 +19,14 @@ struct ColorSetup {
     std::shared_ptr<const OIIO::ColorConfig> config;
     std::string source;  // the config file, or "OpenImageIO's built-in config"
     bool builtin = false;
+    // Set when $OCIO names a config that cannot be loaded and the built-in one is used instead.
+    std::string warning;
 };
 
 // `ocio_path` (--ocio FILE); empty: $OCIO; unset or empty too: OpenImageIO's built-in config,
 // which knows "linear" (scene-linear Rec.709), "sRGB" and "Rec709". An explicit file that is
-// missing or does not parse is an error that names it (OIIO itself would fall back silently).
+// missing or does not parse is an error that names it (OIIO itself would fall back silently);
+// a $OCIO that cannot be loaded gives the built-in config and says why in `warning`.
 Result<ColorSetup> color_config(const std::string& ocio_path);
 
 // The config's linear Rec.709 space ("lin_rec709" in current configs; "Linear Rec.709 (sRGB)",

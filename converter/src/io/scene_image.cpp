@@ -95,6 +95,8 @@ Result<SceneImage> read_scene_image(const std::string& path, const SceneReadOpti
 
     auto cs = color_config(opts.ocio_config);
     if (!cs) return file_error(path, cs.error().message, cs.error().code);
+    std::vector<std::string> config_warnings;
+    if (!cs->warning.empty()) config_warnings.push_back(cs->warning);
 
     // Straight alpha as PNG and TIFF store it, so that it is linearized before premultiplying.
     OIIO::ImageSpec hint;
@@ -127,6 +129,7 @@ Result<SceneImage> read_scene_image(const std::string& path, const SceneReadOpti
                           Code::LimitExceeded);
 
     SceneImage img;
+    img.warnings = std::move(config_warnings);
     img.width = uint32_t(display.w);
     img.height = uint32_t(display.h);
     img.has_alpha = pick->alpha >= 0;

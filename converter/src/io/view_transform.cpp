@@ -40,7 +40,8 @@ Result<std::unique_ptr<ViewTransform>> ViewTransform::open(const ViewSpec& spec)
     auto cs = color_config(spec.config);  // --ocio, else $OCIO; loaded once, shared (io/color_config)
     if (!cs) return cs.error();
     if (cs->builtin)
-        return make_error(Code::InvalidArgument, "--view " + spec.view + " needs an OCIO config: give --ocio FILE or set $OCIO");
+        return make_error(Code::InvalidArgument, "--view " + spec.view + " needs an OCIO config: give --ocio FILE or set $OCIO" +
+                                                     (cs->warning.empty() ? "" : " (" + cs->warning + ")"));
     auto v = std::make_unique<OcioView>();
     v->setup = *cs;
     const OIIO::ColorConfig& config = *cs->config;
