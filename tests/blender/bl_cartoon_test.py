@@ -1,8 +1,9 @@
 """Blender test: a cartoon painting (`spt paint --style cartoon`) as editable Grease Pencil.
 
-Three frames of the flat-colour clip cartoon/star, reduced to 96x72 (Blender's own image scaling:
+Five frames of the flat-colour clip cartoon/star, reduced to 96x72 (Blender's own image scaling:
 the 4.3 and 5.2 roots have no OpenImageIO tools), painted with
---style cartoon: polygons and residual stamps, inter frames that keep, remove and add both. The
+--style cartoon: polygons and residual stamps, inter frames that keep, remove and add both (from
+the fourth frame on, polygons added over kept stamps: the file's order crosses the layers). The
 add-on's default (Automatic) layering must give one layer per kind, "fills" (every polygon, as a
 closed fill-only stroke, in drawing order) below "paint" (the stamps); an unedited export must
 give the same live lists stroke for stroke and, range coded, render the same pixels as the
@@ -45,7 +46,7 @@ def renders_identically(a, b, frames):
 
 
 # ------------------------------------------------------------------ the painting
-FRAMES = 3
+FRAMES = 5
 for i in range(FRAMES):
     img = bpy.data.images.load(os.path.join(star, f"f.{28 + i:04d}.png"))
     img.scale(96, 72)
@@ -90,6 +91,7 @@ for fi, lst in enumerate(orig_lists):
         C.check("spt_polygon_grid" in mat and gpm.show_fill and not gpm.show_stroke, "a fill-only polygon material")
         C.check(g.cyclic, "a polygon is a closed stroke")
 print(f"{sum(map(len, orig_lists))} strokes; {interleaved} polygons drawn after a stamp (inter frames)")
+C.check(interleaved > 0, "some inter frame draws polygons over kept stamps (the order crosses the layers)")
 
 # ------------------------------------------------------------------ unedited export
 C.check(C.export_spt(obj, os.path.join(work, "unedited.spt")) == orig_lists,
