@@ -80,6 +80,10 @@ class SptClip {
     this.frameCount = x.spt_frame_count(handle);
     this.fpsRational = [x.spt_fps_num(handle), x.spt_fps_den(handle)];
     this.fps = this.fpsRational[0] / this.fpsRational[1];
+    // Format 1.3: an alpha canvas is transparent where nothing is painted; `background`
+    // ('#rrggbb', sRGB) is what the file asks a viewer to show behind it.
+    this.hasAlpha = x.spt_has_alpha(handle) !== 0;
+    this.background = '#' + x.spt_background(handle).toString(16).padStart(6, '0');
     this.warnings = [];
     for (let i = 0; i < x.spt_warning_count(handle); ++i) this.warnings.push(core.string(x.spt_warning(handle, i)));
   }

@@ -140,6 +140,8 @@ export class SptPlayer extends HTMLElement {
         this._clip = core.open(bytes);
         this._canvas.width = this._clip.width;
         this._canvas.height = this._clip.height;
+        // Alpha canvases are drawn over the file's background colour (not the player's black).
+        this._canvas.style.background = this._clip.hasAlpha ? this._clip.background : '';
         this._scrub.max = String(this._clip.frameCount - 1);
         this._draw(0);
       } catch (e) {

@@ -24,18 +24,24 @@ void q4(std::string& o, int64_t v) {
     }
 }
 
-void color(std::string& o, Rgba8 c) {
+// Colour encoding 1 (`linear`) writes the 16-bit half codes (exact); encoding 0 the 8-bit values.
+void color(std::string& o, Rgba8 c, bool linear) {
+    if (linear) {
+        o += "\"color\": [" + std::to_string(code16(c, 0)) + ", " + std::to_string(code16(c, 1)) + ", " + std::to_string(code16(c, 2)) +
+             ", " + std::to_string(c.a) + "]";
+        return;
+    }
     o += "\"color\": [" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ", " + std::to_string(c.a) + "]";
 }
 
-void stroke(std::string& o, const Stroke& s) {
+void stroke(std::string& o, const Stroke& s, bool linear) {
     switch (s.kind) {
         case StrokeKind::Stamp: {
             const auto& t = s.stamp;
             o += "{\"type\": \"stamp\", \"set\": " + std::to_string(t.set) + ", \"template\": " + std::to_string(t.tmpl) +
                  ", \"orient\": " + std::to_string(t.orient) + ", \"x\": ";
             q4(o, t.x); o += ", \"y\": "; q4(o, t.y); o += ", ";
-            color(o, t.color);
+            color(o, t.color, linear);
             o += "}";
             break;
         }
@@ -45,13 +51,13 @@ void stroke(std::string& o, const Stroke& s) {
             q4(o, a.tx); o += ", \"ty\": "; q4(o, a.ty);
             o += ", \"a\": "; q4(o, a.a); o += ", \"b\": "; q4(o, a.b);
             o += ", \"c\": "; q4(o, a.c); o += ", \"d\": "; q4(o, a.d); o += ", ";
-            color(o, a.color);
+            color(o, a.color, linear);
             o += "}";
             break;
         }
         case StrokeKind::Curve: {
             o += "{\"type\": \"curve\", ";
-            color(o, s.curve.color);
+            color(o, s.curve.color, linear);
             o += ", \"points\": [";
             for (size_t i = 0; i < s.curve.points.size(); ++i) {
                 const auto& p = s.curve.points[i];
@@ -66,7 +72,7 @@ void stroke(std::string& o, const Stroke& s) {
         case StrokeKind::Polygon: {
             const auto& pg = s.polygon;
             o += "{\"type\": \"polygon\", ";
-            color(o, pg.color);
+            color(o, pg.color, linear);
             if (pg.supersample) o += ", \"supersample\": " + std::to_string(pg.supersample);
             o += ", \"points\": [";
             for (size_t i = 0; i < pg.points.size(); ++i) {
@@ -89,10 +95,21 @@ std::string export_json(const Document& doc) {
     bool polygons = false;
     for (const Frame& f : doc.frames)
         for (const Stroke& s : f.added) polygons = polygons || s.kind == StrokeKind::Polygon;
-    std::string o = std::string("{\n  \"format\": \"spt-strokes\",\n  \"version\": ") + (polygons ? "2" : "1") + ",\n";
-    o += "  \"canvas\": {\"width\": " + std::to_string(h.width) + ", \"height\": " + std::to_string(h.height) +
-         ", \"background\": [" + std::to_string(h.background.r) + ", " + std::to_string(h.background.g) + ", " +
-         std::to_string(h.background.b) + "], \"fps\": [" + std::to_string(h.fps.num) + ", " + std::to_string(h.fps.den) + "]},\n";
+    // Version 3 only for format 1.3 canvases (alpha, colour encoding 1).
+    const bool v3 = !h.plain_color();
+    const bool linear = h.color == ColorEncoding::LinearHalf;
+    std::string o = std::string("{\n  \"format\": \"spt-strokes\",\n  \"version\": ") + (v3 ? "3" : polygons ? "2" : "1") + ",\n";
+    const unsigned bg[3] = {linear ? unsigned(h.background.r << 8 | h.background_lo.r) : h.background.r,
+                            linear ? unsigned(h.background.g << 8 | h.background_lo.g) : h.background.g,
+                            linear ? unsigned(h.background.b << 8 | h.background_lo.b) : h.background.b};
+    o += "  \"canvas\": {\"width\": " + std::to_string(h.width) + ", \"height\": " + std::to_string(h.height);
+    if (v3) {
+        o += ", \"color_encoding\": \"";
+        o += color_encoding_name(h.color);
+        o += std::string("\", \"alpha\": ") + (h.alpha ? "true" : "false");
+    }
+    o += ", \"background\": [" + std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " + std::to_string(bg[2]) +
+         "], \"fps\": [" + std::to_string(h.fps.num) + ", " + std::to_string(h.fps.den) + "]},\n";
     o += "  \"sets\": [";
     for (size_t i = 0; i < h.sets.size(); ++i)
         o += (i ? ", [" : "[") + std::to_string(h.sets[i].width) + ", " + std::to_string(h.sets[i].height) + "]";
@@ -157,7 +174,7 @@ std::string export_json(const Document& doc) {
         o += ", \"strokes\": [";
         for (size_t i = 0; i < fr.added.size(); ++i) {
             o += i ? ",\n      " : "\n      ";
-            stroke(o, fr.added[i]);
+            stroke(o, fr.added[i], linear);
         }
         o += fr.added.empty() ? "]}" : "\n    ]}";
     }

@@ -12,6 +12,8 @@
 #include "spt_import/codec.hpp"
 #include "spt_import/export.hpp"
 #include "spt/atomic_file.hpp"
+#include "spt/color.hpp"
+#include "spt/display.hpp"
 
 namespace spt::import {
 
@@ -21,6 +23,20 @@ std::string num(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return buf;
+}
+
+// The sRGB colour SVG shows: colour encoding 1 (scene-linear half codes) through the sRGB
+// curve, values above 1 clipped (spt/display.hpp's view); encoding 0 as it is.
+Rgba8 shown(Rgba8 c, bool linear) {
+    if (!linear) return c;
+    Rgba8 s;
+    s.a = c.a;
+    uint8_t* out[3] = {&s.r, &s.g, &s.b};
+    for (int k = 0; k < 3; ++k) {
+        const uint16_t code = code16(c, k);
+        *out[k] = unit_to_u8(srgb_encode(code <= kMaxHalfCode ? half_to_float(code) : 0.f));
+    }
+    return s;
 }
 
 std::string hex(Rgba8 c) {
@@ -49,20 +65,20 @@ std::string template_shape(const Template& t, size_t id) {
 // Polygon strokes: SVG's nonzero fill rule is the stroke's (SPEC.md 8.8). SVG renderers
 // anti-alias, like a supersampled polygon; one sampled at pixel centres (grid 0) asks for
 // crisp edges, which browsers draw without anti-aliasing, closer to the spec's pixels.
-void polygon(std::string& o, const PolygonStroke& p) {
+void polygon(std::string& o, const PolygonStroke& p, Rgba8 color) {
     o += "<polygon points=\"";
     for (size_t i = 0; i < p.points.size(); ++i) {
         if (i) o += " ";
         o += num(p.points[i].x / 16.0) + "," + num(p.points[i].y / 16.0);
     }
-    o += "\" fill-rule=\"nonzero\" fill=\"" + hex(p.color) + "\"" + opacity(p.color.a);
+    o += "\" fill-rule=\"nonzero\" fill=\"" + hex(color) + "\"" + opacity(color.a);
     if (p.supersample == 0) o += " shape-rendering=\"crispEdges\"";
     o += "/>\n";
 }
 
-void curve(std::string& o, const CurveStroke& c) {
-    o += "<g fill=\"" + hex(c.color) + "\"";
-    if (c.color.a != 255) o += " opacity=\"" + num(c.color.a / 255.0) + "\"";
+void curve(std::string& o, const CurveStroke& c, Rgba8 color) {
+    o += "<g fill=\"" + hex(color) + "\"";
+    if (color.a != 255) o += " opacity=\"" + num(color.a / 255.0) + "\"";
     o += ">";
     const auto& P = c.points;
     for (size_t i = 0; i < P.size(); ++i) {
@@ -102,10 +118,16 @@ Result<std::string> export_svg(const StreamInfo& info, const std::vector<Stroke>
         o += "\"/></mask>\n";
     }
     if (defs) o += "</defs>\n";
-    o += "<rect width=\"" + std::to_string(h.width) + "\" height=\"" + std::to_string(h.height) + "\" fill=\"" + hex({h.background.r, h.background.g, h.background.b, 255}) + "\"/>\n";
+    // An alpha canvas starts transparent: no background rectangle (the viewer's shows through).
+    const bool linear = h.color == ColorEncoding::LinearHalf;
+    if (!h.alpha) {
+        Rgba8 bg{h.background.r, h.background.g, h.background.b, 255};
+        bg.r_lo = h.background_lo.r, bg.g_lo = h.background_lo.g, bg.b_lo = h.background_lo.b;
+        o += "<rect width=\"" + std::to_string(h.width) + "\" height=\"" + std::to_string(h.height) + "\" fill=\"" + hex(shown(bg, linear)) + "\"/>\n";
+    }
     for (const Stroke& s : strokes) {
-        if (s.kind == StrokeKind::Curve) { curve(o, s.curve); continue; }
-        if (s.kind == StrokeKind::Polygon) { polygon(o, s.polygon); continue; }
+        if (s.kind == StrokeKind::Curve) { curve(o, s.curve, shown(s.curve.color, linear)); continue; }
+        if (s.kind == StrokeKind::Polygon) { polygon(o, s.polygon, shown(s.polygon.color, linear)); continue; }
         uint8_t tmpl;
         double A, B, C, D, E, F;
         Rgba8 col;
@@ -127,7 +149,7 @@ Result<std::string> export_svg(const StreamInfo& info, const std::vector<Stroke>
         if (tmpl >= info.templates.size()) return make_error(Code::InvalidArgument, "stroke refers to missing template " + std::to_string(tmpl));
         o += template_shape(info.templates[tmpl], tmpl);
         o += " transform=\"matrix(" + num(A) + " " + num(B) + " " + num(C) + " " + num(D) + " " + num(E) + " " + num(F) + ")\" fill=\"" +
-             hex(col) + "\"" + opacity(col.a) + "/>\n";
+             hex(shown(col, linear)) + "\"" + opacity(col.a) + "/>\n";
     }
     o += "</svg>\n";
     return o;

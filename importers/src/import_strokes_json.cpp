@@ -6,6 +6,8 @@
 #include "spt_import/importer.hpp"
 #include "spt_json/json.hpp"
 #include "spt_import/shapes.hpp"
+#include "spt/color.hpp"
+#include "spt/display.hpp"
 #include "spt/utf8.hpp"
 
 namespace spt::import {
@@ -22,6 +24,8 @@ public:
     const Limits& lim() const { return lim_; }
     // The document's version: 2 adds polygon strokes (`polygon` is then stored as one).
     int64_t version = 1;
+    // Version 3: canvas.color_encoding "linear-half" (colours are 16-bit half codes).
+    bool linear = false;
     Error err(const Value& v, const std::string& what) const {
         return make_error(Code::Corrupt, src_ + ":" + std::to_string(v.line) + ": " + what);
     }
@@ -73,7 +77,55 @@ private:
 constexpr double kPosPx = double(1 << 20);   // 2^24 Q4
 constexpr double kAxisPx = double(1 << 12);  // 2^16 Q4
 
+// Colour encoding 1 (version 3): "color" [r, g, b(, a)] holds half codes 0..31743 (0x7BFF) and
+// the 8-bit alpha; "linear" [r, g, b(, a)] gives linear values (the nearest code) instead; a
+// "#rrggbb(aa)" string is sRGB, through the inverse sRGB curve.
+bool read_linear_color(const Ctx& c, const Value& obj, const std::string& where, Rgba8& out, Error& e) {
+    const Value* col = obj.find("color");
+    const Value* lin = obj.find("linear");
+    if (col && lin) { e = c.err(*lin, where + ": give \"color\" (codes) or \"linear\" (values), not both"); return false; }
+    if (!col && !lin) { e = c.err(obj, where + ": missing \"color\""); return false; }
+    const Value& v = col ? *col : *lin;
+    if (v.is_string()) {
+        Rgb8 rgb;
+        bool none = false;
+        if (v.text.size() != 7 || !parse_color(v.text, rgb, none) || none) { e = c.err(v, where + ": bad colour \"" + v.text + "\""); return false; }
+        out = Rgba8{};
+        const uint8_t ch[3] = {rgb.r, rgb.g, rgb.b};
+        for (int k = 0; k < 3; ++k) set_code16(out, k, float_to_half_code(srgb_decode(ch[k] / 255.f)));
+    } else {
+        const std::string n = where + (col ? ".color" : ".linear");
+        if (!c.need(v, Type::Array, n, e)) return false;
+        if (v.items.size() != 3 && v.items.size() != 4) { e = c.err(v, n + " must have 3 or 4 entries"); return false; }
+        out = Rgba8{};
+        for (size_t i = 0; i < 3; ++i) {
+            const std::string ni = n + "[" + std::to_string(i) + "]";
+            if (col) {
+                int64_t code;
+                if (!c.integer(v.items[i], ni, 0, kMaxHalfCode, code, e)) return false;
+                set_code16(out, int(i), uint16_t(code));
+            } else {
+                double d;
+                if (!c.num(v.items[i], ni, 0, 65504, d, e)) return false;
+                set_code16(out, int(i), float_to_half_code(float(d)));
+            }
+        }
+        if (v.items.size() == 4) {
+            int64_t a;
+            if (!c.integer(v.items[3], n + "[3]", 0, 255, a, e)) return false;
+            out.a = uint8_t(a);
+        }
+    }
+    if (const Value* op = obj.find("opacity")) {
+        double o;
+        if (!c.num(*op, where + ".opacity", 0, 1, o, e)) return false;
+        out.a = uint8_t(std::nearbyint(out.a * o));
+    }
+    return true;
+}
+
 bool read_color(const Ctx& c, const Value& obj, const std::string& where, Rgba8& out, Error& e) {
+    if (c.linear) return read_linear_color(c, obj, where, out, e);
     const Value* col = obj.find("color");
     if (!col) { e = c.err(obj, where + ": missing \"color\""); return false; }
     if (col->is_string()) {
@@ -337,15 +389,33 @@ bool read_templates(const Ctx& c, const Value* tv, std::vector<Template>& T, Err
     return true;
 }
 
-bool read_header(const Ctx& c, const Value& root, Header& h, Error& e) {
+bool read_header(Ctx& c, const Value& root, Header& h, Error& e) {
     const Value* canvas = field(c, root, "canvas", "document", e);
     if (!canvas || !c.need(*canvas, Type::Object, "canvas", e)) return false;
+    // Version 3 (format 1.3): the colour encoding and the alpha canvas.
+    ColorEncoding enc = ColorEncoding::Srgb8;
+    bool alpha = false;
+    for (const char* k : {"color_encoding", "alpha"}) {
+        const Value* f = canvas->find(k);
+        if (!f) continue;
+        if (c.version < 3) { e = c.err(*f, std::string("canvas.") + k + " needs version 3"); return false; }
+        if (k[0] == 'a') {
+            if (f->type != Type::Bool) { e = c.err(*f, "canvas.alpha must be true or false"); return false; }
+            alpha = f->boolean;
+        } else if (f->is_string() && (f->text == "srgb8" || f->text == "linear-half")) {
+            enc = f->text == "srgb8" ? ColorEncoding::Srgb8 : ColorEncoding::LinearHalf;
+        } else {
+            e = c.err(*f, "canvas.color_encoding must be \"srgb8\" or \"linear-half\"");
+            return false;
+        }
+    }
+    c.linear = enc == ColorEncoding::LinearHalf;
     int64_t w, hh;
     const Value* f;
     if (!(f = field(c, *canvas, "width", "canvas", e)) || !c.integer(*f, "canvas.width", 1, c.lim().max_width, w, e)) return false;
     if (!(f = field(c, *canvas, "height", "canvas", e)) || !c.integer(*f, "canvas.height", 1, c.lim().max_height, hh, e)) return false;
     if (uint64_t(w) * uint64_t(hh) > c.lim().max_pixels) { e = c.err(*canvas, "canvas has more pixels than the limit"); return false; }
-    Rgb8 bg{255, 255, 255};
+    Rgb8 bg{255, 255, 255}, bg_lo{0, 0, 0};
     if ((f = canvas->find("background"))) {
         Value tmp;
         tmp.type = Type::Object;
@@ -353,9 +423,16 @@ bool read_header(const Ctx& c, const Value& root, Header& h, Error& e) {
         tmp.members.emplace_back("color", *f);
         Rgba8 c4;
         if (!read_color(c, tmp, "canvas.background", c4, e)) return false;
+        if (c4.a != 255) { e = c.err(*f, "canvas.background has no alpha"); return false; }
         bg = {c4.r, c4.g, c4.b};
+        bg_lo = {c4.r_lo, c4.g_lo, c4.b_lo};
+    } else if (c.linear) {
+        bg = {0x3C, 0x3C, 0x3C};  // 1.0: white, as in encoding 0
     }
     h = default_header(uint32_t(w), uint32_t(hh), bg);
+    h.color = enc;
+    h.alpha = alpha;
+    h.background_lo = bg_lo;
     if ((f = canvas->find("fps"))) {
         if (f->is_array()) {
             int64_t n, d;
@@ -480,8 +557,8 @@ Result<Document> load(const std::string& path, std::string text, const ImportOpt
     int64_t version = 0;
     const Value* ver = field(c, r, "version", "document", e);
     if (!ver || !c.integer(*ver, "version", 0, 1 << 30, version, e)) return e;
-    if (version != 1 && version != 2)
-        return c.err(*ver, "stroke list version " + std::to_string(version) + " is not supported (this reader knows 1 and 2)");
+    if (version < 1 || version > 3)
+        return c.err(*ver, "stroke list version " + std::to_string(version) + " is not supported (this reader knows 1, 2 and 3)");
     c.version = version;
     Document doc;
     if (!read_header(c, r, doc.info.header, e)) return e;
@@ -529,7 +606,16 @@ Result<Document> load(const std::string& path, std::string text, const ImportOpt
             doc.frames.push_back(std::move(fr));
         }
     }
-    if (opts.background) doc.info.header.background = *opts.background;
+    if (opts.background && doc.info.header.color == ColorEncoding::LinearHalf) {
+        // The sRGB colour given, as linear codes.
+        Rgba8 c;
+        const uint8_t ch[3] = {opts.background->r, opts.background->g, opts.background->b};
+        for (int k = 0; k < 3; ++k) set_code16(c, k, float_to_half_code(srgb_decode(ch[k] / 255.f)));
+        doc.info.header.background = {c.r, c.g, c.b};
+        doc.info.header.background_lo = {c.r_lo, c.g_lo, c.b_lo};
+    } else if (opts.background) {
+        doc.info.header.background = *opts.background;
+    }
     if (opts.fps) doc.info.header.fps = *opts.fps;
     if (Status s = validate(doc, path, opts.limits); !s) return s.error();
     return doc;

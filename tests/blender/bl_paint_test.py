@@ -2,7 +2,7 @@
 the scene's rendered frame sequence (scene.render.filepath frames) and a chosen file pattern,
 plus a still. Each result is imported and checked against `spt info --json --frames` (GP frames
 follow the video frames, strokes per frame), then exported unedited and every frame rendered by
-`spt render` from both files and compared byte for byte. Skips (77) without a working spt paint.
+`spt render` from both files and compared byte for byte. Fails without a working spt paint.
 Cancel is tested without Blender in test_paint_job.py."""
 
 import json
@@ -20,7 +20,7 @@ import bl_gp as G  # noqa: E402
 
 zip_path, spt, work, media = C.args()
 if not C.spt_works(spt, "paint"):
-    print(f"SKIP: needs a working 'spt paint' ({spt or 'not built'})")
+    print(f"FAIL: needs a working 'spt paint' ({spt or 'not built'})")
     sys.exit(C.SKIP)
 C.install(zip_path, spt)
 scene = bpy.context.scene

@@ -1,7 +1,7 @@
 """The add-on's subprocess layer without Blender: PaintJob runs a real `spt paint`, and Cancel
 stops it cleanly (the process ends, the reader threads end, no output or temporary file is left,
 an existing output is not touched). usage: python3 test_paint_job.py SPT [MEDIA_DIR]
-Exits 77 (skipped) when spt is not built."""
+Fails when spt is not built."""
 
 import os
 import sys
@@ -122,7 +122,7 @@ class Cancel(unittest.TestCase):
 
 if __name__ == "__main__":
     if not SPT or not os.path.isfile(SPT):
-        print(f"SKIP: spt not built ({SPT or 'no path given'})")
-        sys.exit(77)
+        print(f"FAIL: spt not built ({SPT or 'no path given'})")
+        sys.exit(1)
     r = unittest.TextTestRunner(verbosity=2).run(unittest.defaultTestLoader.loadTestsFromTestCase(Cancel))
     sys.exit(0 if r.wasSuccessful() else 1)

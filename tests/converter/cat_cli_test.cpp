@@ -31,7 +31,7 @@ void write_shot(const std::string& path, const std::string& id, int k, int n, in
 }
 
 TEST(CatCli, JoinsAndTheResultVerifies) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     write_test_spt(d.file("a.spt"), 12, 5, spt::Coding::Range, 1);
     write_test_spt(d.file("b.spt"), 7, 3, spt::Coding::Range, 2);
@@ -53,7 +53,7 @@ TEST(CatCli, JoinsAndTheResultVerifies) {
 }
 
 TEST(CatCli, RefusesADifferentCanvasNamingTheFile) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     write_test_spt(d.file("a.spt"), 6, 5);
     spt::StreamInfo info = test_info();
@@ -73,7 +73,7 @@ TEST(CatCli, RefusesADifferentCanvasNamingTheFile) {
 }
 
 TEST(CatCli, APlansShotsJoinOnceEachInOrderAndComplete) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     write_shot(d.file("s0.spt"), "p1", 0, 3, 4, 1001);
     write_shot(d.file("s1.spt"), "p1", 1, 3, 3, 1005);

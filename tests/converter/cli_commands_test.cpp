@@ -35,7 +35,7 @@ std::vector<uint8_t> reference_render(const std::string& path, size_t f) {
 // Every coding is named by libspt (spt::coding_name): a coding-2 file's frames say "replay",
 // in the table and in JSON, not "stored".
 TEST(CliInfo, NamesEveryCoding) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string golden = std::string(SPT_SOURCE_DIR) + "/tests/format/golden/";
     for (const auto& [file, coding] : {std::pair<const char*, const char*>{"replay_paint.spt", "replay"},
@@ -51,7 +51,7 @@ TEST(CliInfo, NamesEveryCoding) {
 }
 
 TEST(CliInfo, TextAndJsonFields) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("a.spt");
     write_test_spt(f, 12, 5);
@@ -111,7 +111,7 @@ TEST(CliInfo, TextAndJsonFields) {
 }
 
 TEST(CliVerify, GoodFilePassesFlippedBitFails) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("good.spt");
     write_test_spt(f, 12, 5);
@@ -144,7 +144,7 @@ TEST(CliVerify, GoodFilePassesFlippedBitFails) {
 // samples would keep a renderer busy for half a minute (and its big brothers for hours): verify
 // and render refuse it at once by the rendering-work limit (SPEC.md 10), naming the stroke.
 TEST(CliVerify, PolygonRenderingBombIsRefused) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("star.spt");
     spt::StreamInfo info;
@@ -177,7 +177,7 @@ TEST(CliVerify, PolygonRenderingBombIsRefused) {
 }
 
 TEST(CliRender, SingleFrameAndSequence) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("a.spt");
     write_test_spt(f, 12, 5);
@@ -219,7 +219,7 @@ TEST(CliRender, SingleFrameAndSequence) {
 }
 
 TEST(CliRender, PreviewVideo) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("a.spt");
     write_test_spt(f, 12, 5);
@@ -229,7 +229,7 @@ TEST(CliRender, PreviewVideo) {
 }
 
 TEST(CliPack, StoredRangeRoundTripRendersIdentically) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("r.spt");
     write_test_spt(f, 12, 5, spt::Coding::Range);
@@ -260,7 +260,7 @@ TEST(CliPack, StoredRangeRoundTripRendersIdentically) {
 }
 
 TEST(CliCompare, ImagesAndSequences) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("a.spt");
     write_test_spt(f, 6, 3);
@@ -295,7 +295,7 @@ TEST(CliCompare, ImagesAndSequences) {
 }
 
 TEST(CliErrors, BadArgumentsAndMissingFiles) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("a.spt");
     write_test_spt(f, 3, 3);

@@ -8,7 +8,7 @@
 using namespace spt_test;
 
 TEST(CliSyntax, EqualsFormMeansTheSameAsTwoWords) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string f = d.file("a.spt");
     write_test_spt(f, 6, 3);
@@ -44,7 +44,7 @@ TEST(CliSyntax, EqualsFormMeansTheSameAsTwoWords) {
 }
 
 TEST(CliSyntax, PaintTakesTheEqualsFormToo) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     {
         spt::Canvas c(32, 24, {200, 40, 30});
@@ -69,7 +69,7 @@ TEST(CliSyntax, PaintTakesTheEqualsFormToo) {
 }
 
 TEST(CliSyntax, HelpIsGeneratedFromTheOptionDeclarations) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     struct Want { const char* cmd; std::vector<const char*> options; };
     const Want wants[] = {
@@ -102,7 +102,7 @@ TEST(CliSyntax, HelpIsGeneratedFromTheOptionDeclarations) {
 }
 
 TEST(CliSyntax, BadCommandLinesExitTwoWithTheCommandNamed) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     for (const auto& args : std::vector<std::vector<std::string>>{
              {"paint"}, {"paint", "in.png"}, {"paint", "in.png", "-o"}, {"paint", "a.png", "b.png", "-o", "x.spt"},

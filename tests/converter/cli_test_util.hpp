@@ -155,10 +155,11 @@ inline void write_test_spt(const std::string& path, int frames = 12, int key_eve
     ASSERT_TRUE(s.ok()) << s.error().message;
 }
 
-#define SKIP_WITHOUT_TOOL()                                                  \
+// Fails (never skips) when the spt tool is missing: a test never passes by skipping.
+#define REQUIRE_TOOL()                                                       \
     do {                                                                     \
         if (std::string(SPT_TOOL).empty() || !fs::exists(SPT_TOOL))          \
-            GTEST_SKIP() << "the spt tool was not built: " << SPT_TOOL;      \
+            GTEST_FAIL() << "the spt tool was not built: " << SPT_TOOL;      \
     } while (0)
 
 }  // namespace spt_test

@@ -12,7 +12,7 @@ using namespace spt_test;
 const std::string kEarth = std::string(SPT_MEDIA_DIR) + "/exr/earth/earth.####.exr";
 
 TEST(FrameNumbersCli, ASequenceKeepsItsFrameNumbers) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     ASSERT_TRUE(fs::exists(std::string(SPT_MEDIA_DIR) + "/exr/earth/earth.0003.exr"))
         << "the shared media are needed: " << SPT_MEDIA_DIR;
     TempDir d;
@@ -53,7 +53,7 @@ TEST(FrameNumbersCli, ASequenceKeepsItsFrameNumbers) {
 }
 
 TEST(FrameNumbersCli, FilesWithoutNumbersCountFromZero) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     write_test_spt(d.file("t.spt"), 4, 2);
     ASSERT_EQ(run_spt(d, {"render", d.file("t.spt"), "-o", d.file("o.####.png")}).code, 0);

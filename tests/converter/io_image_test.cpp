@@ -54,7 +54,7 @@ std::string media(const std::string& rel) { return std::string(SPT_MEDIA_DIR) + 
 
 TEST(IoImage, ReadsMediaStills) {
     for (const char* name : {"stills/astronaut.png", "stills/coffee.png", "stills/kodim02.tif"}) {
-        if (!fs::exists(media(name))) GTEST_SKIP() << "media absent: " << media(name);
+        if (!fs::exists(media(name))) GTEST_FAIL() << "media absent: " << media(name);
         auto r = read_image(media(name));
         ASSERT_TRUE(r.ok()) << r.error().message;
         EXPECT_GT(r->width, 0u);
@@ -67,7 +67,7 @@ TEST(IoImage, ReadsMediaStills) {
 
 TEST(IoImage, ReadsMediaExr) {
     const std::string p = media("exr/earth/earth.0001.exr");
-    if (!fs::exists(p)) GTEST_SKIP() << "media absent: " << p;
+    if (!fs::exists(p)) GTEST_FAIL() << "media absent: " << p;
     auto r = read_image(p);
     ASSERT_TRUE(r.ok()) << r.error().message;
     EXPECT_EQ(r->width, 480u);

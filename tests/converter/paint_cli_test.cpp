@@ -56,10 +56,10 @@ std::string small_still() {
 class PaintCli : public ::testing::Test {
 protected:
     void SetUp() override {
-        if (kTool.empty() || !fs::exists(kTool)) GTEST_SKIP() << "spt tool not built";
+        if (kTool.empty() || !fs::exists(kTool)) GTEST_FAIL() << "spt tool not built";
         fs::create_directories(kOut);
         still_ = small_still();
-        if (still_.empty()) GTEST_SKIP() << "media missing: " << SPT_MEDIA_DIR << "/stills/chelsea.png";
+        if (still_.empty()) GTEST_FAIL() << "media missing: " << SPT_MEDIA_DIR << "/stills/chelsea.png";
     }
     std::string still_;
 };

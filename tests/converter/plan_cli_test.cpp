@@ -45,7 +45,7 @@ std::vector<std::string> frames_of(const std::string& path) {
 }
 
 TEST(PlanCli, ShotsPaintedApartJoinToTheOneProcessPainting) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string seq = two_shot_sequence(d);
     ASSERT_FALSE(HasFailure());
@@ -124,7 +124,7 @@ TEST(PlanCli, ShotsPaintedApartJoinToTheOneProcessPainting) {
 }
 
 TEST(PlanCli, BadPlansAndShotsAreRefused) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     TempDir d;
     const std::string seq = two_shot_sequence(d);
     ASSERT_FALSE(HasFailure());

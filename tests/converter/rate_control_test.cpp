@@ -121,9 +121,9 @@ TEST(RateCoding2, RepaintRegionDecodesBitIdentically) {
 }
 
 TEST(RateCli, TargetBytesLandsWithinFivePercent) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     const std::string in = paint_test::media("foreign/coffee-256.png");
-    if (!std::filesystem::exists(in)) GTEST_SKIP() << "media missing";
+    if (!std::filesystem::exists(in)) GTEST_FAIL() << "media missing";
     spt_test::TempDir dir;
     const uint64_t target = 7000;
     const auto r = spt_test::run_spt(dir, {"paint", in, "-o", dir.file("t.spt"), "--progress", "none", "--target-bytes",
@@ -136,9 +136,9 @@ TEST(RateCli, TargetBytesLandsWithinFivePercent) {
 }
 
 TEST(RateCli, TargetPsnrIsReached) {
-    SKIP_WITHOUT_TOOL();
+    REQUIRE_TOOL();
     const std::string in = paint_test::media("foreign/coffee-256.png");
-    if (!std::filesystem::exists(in)) GTEST_SKIP() << "media missing";
+    if (!std::filesystem::exists(in)) GTEST_FAIL() << "media missing";
     spt_test::TempDir dir;
     const auto r = spt_test::run_spt(dir, {"paint", in, "-o", dir.file("p.spt"), "--progress", "none", "--target-psnr",
                                            "27", "--threads", "2", "--preview", dir.file("p.png")});

@@ -252,7 +252,7 @@ TEST(ImportErrors, NameFileLineAndElement) {
         {"e5.json", "{\"shapes\":[\n{\"type\":3, \"data\":[1],\"color\":[1,2,3,4]}]}", "e5.json:2: shapes[0]: unknown shape type 3"},
         {"e6.json", "{\"shapes\":[{\"type\":32, \"data\":[1,2],\"color\":[1,2,3,4]}]}", "needs 3"},
         {"e7.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":10,\"height\":10},\n\"frames\":[{\"strokes\":[\n{\"type\":\"blob\"}]}]}", "e7.json:3: frames[0].strokes[0]: unknown stroke type"},
-        {"e8.json", "{\"format\":\"spt-strokes\",\"version\":3}", "version 3"},
+        {"e8.json", "{\"format\":\"spt-strokes\",\"version\":4}", "version 4"},
         {"e9.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":100000,\"height\":10},\"frames\":[]}", "canvas.width"},
     };
     for (const auto& c : cases) {

@@ -84,9 +84,9 @@ bool have_tools() { return fs::exists(kChromium) && std::string(SPT_TOOL).size()
 }  // namespace
 
 TEST(SvgInBrowser, ShapePaintingMatchesRenderer) {
-    if (!have_tools()) GTEST_SKIP() << "needs " << kChromium << " and the spt tool";
+    if (!have_tools()) GTEST_FAIL() << "needs " << kChromium << " and the spt tool";
     const std::string f = std::string(SPT_MEDIA_DIR) + "/foreign/coffee-primitive-ellipses.svg";
-    if (!fs::exists(f)) GTEST_SKIP() << "media missing: " << f;
+    if (!fs::exists(f)) GTEST_FAIL() << "media missing: " << f;
     auto doc = import::import_path(f, "");
     ASSERT_TRUE(doc.ok()) << doc.error().message;
     const double p = browser_psnr(*doc, "shapes");
@@ -95,10 +95,10 @@ TEST(SvgInBrowser, ShapePaintingMatchesRenderer) {
 }
 
 TEST(SvgInBrowser, PolygonsMatchRenderer) {
-    if (!have_tools()) GTEST_SKIP() << "needs " << kChromium << " and the spt tool";
+    if (!have_tools()) GTEST_FAIL() << "needs " << kChromium << " and the spt tool";
     // geometrize's rotated ellipses import as 20-vertex polygon strokes (format 1.2).
     const std::string f = std::string(SPT_MEDIA_DIR) + "/foreign/coffee-geometrize-rotellipses.svg";
-    if (!fs::exists(f)) GTEST_SKIP() << "media missing: " << f;
+    if (!fs::exists(f)) GTEST_FAIL() << "media missing: " << f;
     auto doc = import::import_path(f, "");
     ASSERT_TRUE(doc.ok()) << doc.error().message;
     size_t polygons = 0;
@@ -110,7 +110,7 @@ TEST(SvgInBrowser, PolygonsMatchRenderer) {
 }
 
 TEST(SvgInBrowser, BitmapStampsAndCurvesMatchRenderer) {
-    if (!have_tools()) GTEST_SKIP() << "needs " << kChromium << " and the spt tool";
+    if (!have_tools()) GTEST_FAIL() << "needs " << kChromium << " and the spt tool";
     import::Document d;
     d.info.header = import::default_header(160, 120, {240, 235, 220});
     d.info.header.sets = {{40, 12}, {16, 6}};

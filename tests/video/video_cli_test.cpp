@@ -104,7 +104,7 @@ Interrupted paint_and_interrupt(const std::vector<std::string>& args, int sig, d
 }
 
 void check_interrupt(int sig) {
-    if (!have_tool()) GTEST_SKIP() << "spt binary not built";
+    if (!have_tool()) GTEST_FAIL() << "spt binary not built";
     const auto dir = spt_test::temp_dir("cli_sig" + std::to_string(sig));
     const int total = 150;
     write_sequence(dir, total, 96, 64);
@@ -151,7 +151,7 @@ TEST(VideoCli, SigtermLeavesAValidFileOrNothing) { check_interrupt(SIGTERM); }
 // SIGKILL cannot be caught: the output is an unnamed file (O_TMPFILE) until it is complete, so
 // the folder holds nothing new at all afterwards (issue 20).
 TEST(VideoCli, SigkillLeavesNothing) {
-    if (!have_tool()) GTEST_SKIP() << "spt binary not built";
+    if (!have_tool()) GTEST_FAIL() << "spt binary not built";
     const auto dir = spt_test::temp_dir("cli_sigkill");
     write_sequence(dir, 150, 96, 64);
     const std::string out = (dir / "out.spt").string();
@@ -168,13 +168,13 @@ TEST(VideoCli, SigkillLeavesNothing) {
 }
 
 TEST(VideoCli, PaintsAnAviAndRenderSeeksIntoTheMiddle) {
-    if (!have_tool()) GTEST_SKIP() << "spt binary not built";
+    if (!have_tool()) GTEST_FAIL() << "spt binary not built";
     const auto dir = spt_test::temp_dir("cli_avi");
     const std::string avi = (dir / "clip.avi").string();
     const int w = 96, h = 64, frames = 16;
     {
         cv::VideoWriter vw(avi, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 12.0, cv::Size(w, h));
-        if (!vw.isOpened()) GTEST_SKIP() << "OpenCV cannot write MJPG AVI here";
+        if (!vw.isOpened()) GTEST_FAIL() << "OpenCV cannot write MJPG AVI here";
         for (int f = 0; f < frames; ++f) {
             auto rgb = spt_test::scene_frame(0, f, w, h);
             cv::Mat m(h, w, CV_8UC3, rgb.data()), bgr;

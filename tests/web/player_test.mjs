@@ -249,6 +249,59 @@ try {
     }
     await page.close();
   }
+
+  // Format 1.3 (made from JSON version 3 by spt import): a scene-linear clip shows the sRGB view
+  // spt render writes, byte for byte; an alpha clip is transparent where nothing is painted,
+  // over the file's background colour, and opaque pixels are spt render's.
+  {
+    const strokes = [];
+    for (let i = 0; i < 60; ++i)
+      strokes.push({ type: 'stamp', set: 0, template: i % 2, orient: i % 8, x: (i * 37) % 96 + 0.5, y: (i * 23) % 64 + 0.5,
+                     linear: [(i % 7) * 0.9, 0.03 * (i % 5), 3.5 * (i % 3)] });
+    const doc = (canvas) => JSON.stringify({ format: 'spt-strokes', version: 3, sets: [[12, 6]], strokes,
+                                              canvas: { width: 96, height: 64, ...canvas } });
+    fs.writeFileSync(w('lin.json'), doc({ color_encoding: 'linear-half', background: [14336, 0, 15360] }));
+    fs.writeFileSync(w('alpha.json'), doc({ color_encoding: 'linear-half', alpha: true, background: [14336, 0, 15360] }));
+    const { page, errors } = await openPlayer(context, w('clip.html'));
+    for (const name of ['lin', 'alpha']) {
+      run('import', w(`${name}.json`), '-o', w(`${name}.spt`), '--quiet');
+      run('render', w(`${name}.spt`), '-o', w(`${name}.ppm`));
+      const r = await page.evaluate(async (b64) => {
+        const el = document.querySelector('spt-player');
+        el.pause();
+        await el.load(Uint8Array.from(atob(b64), (c) => c.charCodeAt(0)));
+        await el.seek(0);
+        const px = el.canvas.getContext('2d').getImageData(0, 0, el.canvas.width, el.canvas.height).data;
+        let s = '';
+        for (let i = 0; i < px.length; i += 0x8000) s += String.fromCharCode.apply(null, px.subarray(i, i + 0x8000));
+        return { px: btoa(s), background: el.canvas.style.background };
+      }, fs.readFileSync(w(`${name}.spt`)).toString('base64'));
+      const got = Buffer.from(r.px, 'base64');
+      const want = ppm(w(`${name}.ppm`));
+      assert.equal(got.length / 4, want.length / 3, `${name}: canvas size`);
+      // The file's background 0.5, 0, 1.0 through the sRGB curve is #bc00ff.
+      let bad = 0, clear = 0, first = -1;
+      for (let i = 0, j = 0; j < want.length; i += 4, j += 3) {
+        const a = got[i + 3];
+        const same = got[i] === want[j] && got[i + 1] === want[j + 1] && got[i + 2] === want[j + 2];
+        const ok = a === 255 ? same : name === 'alpha' && a === 0 && want[j] === 0xbc && want[j + 1] === 0 && want[j + 2] === 0xff;
+        if (a === 0) ++clear;
+        if (!ok && first < 0) first = j / 3;
+        if (!ok) ++bad;
+      }
+      assert.equal(bad, 0, `${name}.spt: ${bad} pixels differ from spt render (first at pixel ${first})`);
+      if (name === 'alpha') {
+        assert.ok(clear > 100, `alpha.spt: ${clear} transparent pixels`);
+        assert.equal(r.background, 'rgb(188, 0, 255)', 'alpha.spt: drawn over the file background');
+      } else {
+        assert.equal(clear, 0);
+        assert.equal(r.background, '', 'lin.spt: no background behind an opaque canvas');
+      }
+      console.log(`ok: ${name}.spt (format 1.3) drawn as spt render shows it`);
+    }
+    assert.deepEqual(errors, [], 'format 1.3: errors on the page');
+    await page.close();
+  }
 } finally {
   await close();
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "spt/display.hpp"
 #include "spt/reader.hpp"
 
 #if defined(__EMSCRIPTEN__)
@@ -21,7 +22,9 @@ namespace {
 struct Player {
     std::unique_ptr<spt::Reader> reader;
     spt::Canvas canvas;
-    std::vector<uint8_t> rgba;  // width * height * 4; alpha 255 (every pixel is painted)
+    // width * height * 4, straight sRGB (spt/display.hpp to_rgba8): alpha 255 on plain
+    // canvases; alpha canvases keep theirs, scene-linear ones go through the sRGB curve.
+    std::vector<uint8_t> rgba;
 };
 
 // The last failure's message and code, for spt_error_message() / spt_error_code().
@@ -52,7 +55,7 @@ SPT_EXPORT Player* spt_open(const uint8_t* data, size_t size) {
         set_error(spt::make_error(spt::Code::Corrupt, "the file holds no complete frame"));
         return nullptr;
     }
-    p->canvas = spt::Canvas(h.width, h.height, h.background);
+    p->canvas = spt::Canvas(h);
     p->rgba.assign(size_t(h.width) * h.height * 4, 255);
     return p.release();
 }
@@ -69,6 +72,17 @@ SPT_EXPORT uint32_t spt_frame_index(const Player* p, uint32_t pos) { return p->r
 SPT_EXPORT uint32_t spt_is_key(const Player* p, uint32_t pos) {
     return p->reader->frames()[pos].type == spt::FrameType::Key;
 }
+// 1 when the canvas has an alpha channel (format 1.3): the page shows through where it is
+// transparent, over spt_background().
+SPT_EXPORT uint32_t spt_has_alpha(const Player* p) { return p->reader->info().header.alpha ? 1 : 0; }
+// The header's background as sRGB 0xRRGGBB (scene-linear through the sRGB curve).
+SPT_EXPORT uint32_t spt_background(const Player* p) {
+    const auto& h = p->reader->info().header;
+    uint32_t v = 0;
+    for (int k = 0; k < 3; ++k) v = v << 8 | spt::unit_to_u8(spt::srgb_encode(spt::background_linear(h, k)));
+    if (h.color == spt::ColorEncoding::Srgb8) v = uint32_t(h.background.r) << 16 | uint32_t(h.background.g) << 8 | h.background.b;
+    return v;
+}
 SPT_EXPORT uint32_t spt_warning_count(const Player* p) { return uint32_t(p->reader->warnings().size()); }
 SPT_EXPORT const char* spt_warning(const Player* p, uint32_t i) { return p->reader->warnings()[i].message.c_str(); }
 
@@ -84,6 +98,11 @@ SPT_EXPORT int spt_render(Player* p, uint32_t pos) {
     if (spt::Status s = p->reader->render_frame(pos, p->canvas, 1); !s) {
         set_error(s.error());
         return g_code;
+    }
+    const auto& h = p->reader->info().header;
+    if (!h.plain_color()) {
+        spt::to_rgba8(p->canvas, h, p->rgba);
+        return 0;
     }
     const uint8_t* src = p->canvas.rgb.data();
     uint8_t* dst = p->rgba.data();

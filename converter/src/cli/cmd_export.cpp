@@ -41,7 +41,10 @@ int cmd_export(int argc, char** argv) {
                 "affine stroke is its template (ellipse/rect/polygon, or a bitmap as a PNG mask) placed with\n"
                 "transform=\"matrix(...)\"; curves are round-capped outlines; polygon strokes are <polygon>s\n"
                 "(nonzero fill); the result renders in a browser\n"
-                "close to spt render (browsers anti-alias edges; spt samples pixel centres).");
+                "close to spt render (browsers anti-alias edges; spt samples pixel centres).\n"
+                "Format 1.3 files: an alpha canvas's SVG has no background rectangle (strokes keep their\n"
+                "opacity); scene-linear colours are shown through the sRGB curve (above 1 clips). Their JSON\n"
+                "is version 3: canvas.color_encoding, canvas.alpha and, when linear, colours as 16-bit half codes.");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     const std::string in = args.pos("IN.spt"), out = args.get("output");
     if (out.empty()) return args.usage_error("missing -o OUT.json or -o OUT.svg");

@@ -96,7 +96,8 @@ int cmd_import(int argc, char** argv) {
         return 1;
     }
     bool fitted = false;
-    if (ref && !doc->report.background_stated && !opts.background) {
+    // The fit is of 8-bit sRGB backgrounds on opaque canvases.
+    if (ref && !doc->report.background_stated && !opts.background && doc->info.header.plain_color()) {
         auto bg = import::fit_background(*doc, ref->rgb.data());
         if (!bg) { std::fprintf(stderr, "spt import: %s\n", bg.error().message.c_str()); return 1; }
         import::set_background(*doc, *bg);

@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "io/json.hpp"
 #include "io/spt_file.hpp"
+#include "spt/color.hpp"
 #include "spt/concat.hpp"
 #include "spt/spt.hpp"
 
@@ -67,7 +68,10 @@ int cmd_info(int argc, char** argv) {
             "JSON keys (stable): file, file_bytes, format_version, complete, has_index, canvas "
             "{width, height}, fps {num, den, value}, frame_count (header value, null when "
             "unknown), frames_found, first_frame_number (the source's number of frame 0, SPEC.md 3.3; 0 "
-            "when the file has none), duration_seconds, color, background [r, g, b], sets "
+            "when the file has none), duration_seconds, color (\"srgb8\" or \"linear-half\"), color_encoding "
+            "{id (0, 1), name (\"8-bit sRGB\", \"scene-linear half float\")}, alpha (true: an alpha canvas, "
+            "format 1.3), background [r, g, b] (the high bytes in colour encoding 1), background_codes [r, g, b] "
+            "and background_linear [r, g, b] (colour encoding 1: the 16-bit half codes and their values), sets "
             "[{width, height}], orientations [{cos_q14, sin_q14, degrees}], templates [{kind, "
             "name, width, height}], metadata {key: value}, rois [{first_frame, last_frame, x, y, "
             "w, h}], key_frames [index...], strokes {added, removed, kinds {stamp, affine, curve, "
@@ -129,7 +133,11 @@ int cmd_info(int argc, char** argv) {
         }
     }
     const double fps = h.fps.den ? double(h.fps.num) / h.fps.den : 0.0;
-    const char* color = h.color == ColorEncoding::Srgb8 ? "srgb8" : "unknown";
+    const char* color = color_encoding_name(h.color);
+    const bool linear = h.color == ColorEncoding::LinearHalf;
+    const char* encoding_text = linear ? "scene-linear half float" : h.color == ColorEncoding::Srgb8 ? "8-bit sRGB" : "unknown";
+    uint16_t bg_codes[3] = {uint16_t(h.background.r << 8 | h.background_lo.r), uint16_t(h.background.g << 8 | h.background_lo.g),
+                            uint16_t(h.background.b << 8 | h.background_lo.b)};
 
     if (json) {
         io::JsonWriter j(true);
@@ -144,7 +152,16 @@ int cmd_info(int argc, char** argv) {
         j.kv("first_frame_number", first_number);
         j.kv("duration_seconds", fps > 0 ? double(frames.size()) / fps : 0.0);
         j.kv("color", color);
+        j.key("color_encoding").obj().kv("id", uint32_t(h.color)).kv("name", encoding_text).end();
+        j.kv("alpha", h.alpha);
         j.key("background").arr().integer(h.background.r).integer(h.background.g).integer(h.background.b).end();
+        if (linear) {
+            j.key("background_codes").arr();
+            for (uint16_t c : bg_codes) j.uinteger(c);
+            j.end().key("background_linear").arr();
+            for (uint16_t c : bg_codes) j.num(double(half_to_float(c)));
+            j.end();
+        }
         j.key("sets").arr();
         for (const auto& s : h.sets) j.obj().kv("width", uint32_t(s.width)).kv("height", uint32_t(s.height)).end();
         j.end().key("orientations").arr();
@@ -201,8 +218,19 @@ int cmd_info(int argc, char** argv) {
     std::printf("%s: .spt %u.%u, %llu bytes%s%s\n", path.c_str(), h.version_major, h.version_minor,
                 (unsigned long long)sec.total, soundness(r).c_str(),
                 r.has_index() ? "" : ", no index");
-    std::printf("canvas      %u x %u, %u/%u fps (%.3f), colour %s, background #%02x%02x%02x\n", h.width,
-                h.height, h.fps.num, h.fps.den, fps, color, h.background.r, h.background.g, h.background.b);
+    if (h.plain_color()) {
+        std::printf("canvas      %u x %u, %u/%u fps (%.3f), colour %s, background #%02x%02x%02x\n", h.width,
+                    h.height, h.fps.num, h.fps.den, fps, color, h.background.r, h.background.g, h.background.b);
+    } else {
+        std::printf("canvas      %u x %u, %u/%u fps (%.3f), colour %s (%s), %s, background ", h.width, h.height,
+                    h.fps.num, h.fps.den, fps, color, encoding_text, h.alpha ? "alpha" : "no alpha");
+        if (linear)
+            std::printf("%g, %g, %g linear (codes %04x %04x %04x)", double(half_to_float(bg_codes[0])), double(half_to_float(bg_codes[1])),
+                        double(half_to_float(bg_codes[2])), bg_codes[0], bg_codes[1], bg_codes[2]);
+        else
+            std::printf("#%02x%02x%02x", h.background.r, h.background.g, h.background.b);
+        std::printf("%s\n", h.alpha ? " (shown behind the transparent canvas)" : "");
+    }
     std::printf("frames      %zu found", frames.size());
     if (h.frame_count != kUnknownFrameCount) std::printf(" (header says %u)", h.frame_count);
     if (fps > 0) std::printf(", %.2f s", double(frames.size()) / fps);

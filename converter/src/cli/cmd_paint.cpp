@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cli/commands.hpp"
@@ -12,6 +13,7 @@
 #include "cli/paint_options.hpp"
 #include "cli/paint_plan.hpp"
 #include "cli/paint_progress.hpp"
+#include "cli/paint_scene_still.hpp"
 #include "io/image_io.hpp"
 #include "io/trial_output.hpp"
 #include "io/sequence.hpp"
@@ -66,6 +68,11 @@ int video_options(const PaintCommandOptions& o, video::VideoPaintOptions& v) {
     v.coding = o.coding;
     v.target_bytes = o.target_bytes;
     v.target_bytes_per_second = o.target_bytes_per_second;
+    v.color_encoding = o.color_encoding;
+    v.alpha = o.alpha;
+    v.scene_read.colorspace = o.colorspace;
+    v.scene_read.ocio_config = o.ocio_config;
+    v.scene_read.layer = o.layer;
     if (!o.templates_dir.empty()) {
         auto t = io::load_templates(o.templates_dir);
         if (!t) return fail(t.error().message);
@@ -113,6 +120,12 @@ int paint_still(const PaintCommandOptions& o) {
         if (Status c = io::check_image_output(o.preview); !c) return fail("--preview " + c.error().message);
     if (!o.side_by_side.empty())
         if (Status c = io::check_image_output(o.side_by_side); !c) return fail("--side-by-side " + c.error().message);
+    // Format 1.3 (alpha canvas, scene-linear colour) when the options and the input ask for
+    // it; otherwise the 8-bit path below, byte for byte as before.
+    std::optional<io::SceneImage> scene;
+    auto target = scene_target(o, scene);
+    if (!target) return fail(target.error().message);
+    if (*target) return paint_scene_still(o, *scene, **target, still_metadata(o));
     auto img = io::read_image(o.input, ro);
     if (!img) return fail(img.error().message);
     const uint32_t W = img->width, H = img->height;

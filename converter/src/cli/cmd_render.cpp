@@ -9,12 +9,14 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "io/canvas_image.hpp"
 #include "io/image_io.hpp"
 #include "io/private_output.hpp"
 #include "io/progress.hpp"
 #include "io/sequence.hpp"
 #include "io/spt_file.hpp"
 #include "spt/concat.hpp"
+#include "spt_import/shapes.hpp"
 #include "spt/spt.hpp"
 
 namespace spt::cli {
@@ -26,6 +28,25 @@ namespace {
 int fail(const std::string& msg) {
     std::fprintf(stderr, "spt render: %s\n", msg.c_str());
     return 1;
+}
+
+// --background: "R,G,B" (0..255, as spt paint's), a hex colour "RRGGBB" / "#RRGGBB" (as spt
+// import's) or an SVG colour name ("white", "black", ...: the SVG importer's parser).
+bool parse_colour(std::string s, Rgb8& c) {
+    bool none = false;
+    if (s.find(',') == std::string::npos && s.size() != 6 && import::parse_color(s, c, none) && !none) return true;
+    if (!s.empty() && s[0] == '#') s.erase(0, 1);
+    if (s.size() == 6 && s.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos) {
+        const unsigned long v = std::stoul(s, nullptr, 16);
+        c = {uint8_t(v >> 16), uint8_t(v >> 8), uint8_t(v)};
+        return true;
+    }
+    int v[3], used = 0;
+    if (std::sscanf(s.c_str(), "%d,%d,%d%n", &v[0], &v[1], &v[2], &used) != 3 || used != int(s.size())) return false;
+    for (int k : v)
+        if (k < 0 || k > 255) return false;
+    c = {uint8_t(v[0]), uint8_t(v[1]), uint8_t(v[2])};
+    return true;
 }
 
 std::string lower_ext(const std::string& p) {
@@ -55,8 +76,11 @@ public:
         }
         return true;
     }
-    void write(const Canvas& c) {
-        cv::Mat rgb(int(c.height), int(c.width), CV_8UC3, const_cast<uint8_t*>(c.rgb.data()));
+    void write(const Canvas& c, const Header& h, const io::CanvasImageOptions& o) {
+        // A plain canvas as it is; others flattened and viewed as a JPEG would be.
+        if (!h.plain_color() || o.view) flat_ = io::canvas_rgb8(c, h, o);
+        cv::Mat rgb(int(c.height), int(c.width), CV_8UC3,
+                    const_cast<uint8_t*>(h.plain_color() && !o.view ? c.rgb.data() : flat_.data()));
         cv::cvtColor(rgb, bgr_, cv::COLOR_RGB2BGR);
         writer_.write(bgr_);
     }
@@ -76,13 +100,14 @@ private:
     cv::VideoWriter writer_;
     io::PrivateOutput out_;
     cv::Mat bgr_;
+    std::vector<uint8_t> flat_;
 };
 
 }  // namespace
 
 int cmd_render(int argc, char** argv) {
     Args args("render", "render a .spt file to images (PNG, EXR, TIFF, JPEG), a sequence or a video",
-              "spt render FILE.spt -o OUT [--frames RANGE | --frame N] [--start N] [--progress MODE]");
+              "spt render FILE.spt -o OUT [--frames RANGE | --frame N] [--start N] [--background C] [...]");
     args.positional("FILE.spt", "the file to render")
         .option("output", "OUT",
                 "an image (.png .exr .tif .jpg ...: one frame), a sequence pattern (out.####.png, "
@@ -94,11 +119,26 @@ int cmd_render(int argc, char** argv) {
         .option("frame", "N", "the frame of a single-image output, by frame number (default: the first)")
         .option("start", "N", "number the output files from N: the file's i-th frame is written as i + N "
                               "(default: the frame numbers, so shot.1001.exr... renders to out.1001.png...)")
+        .option("background", "COLOUR", "flatten an alpha canvas over this sRGB colour: R,G,B (0..255), RRGGBB or a name, "
+                                         "for any output (default: PNG, TIFF and EXR keep the alpha; JPEG and videos "
+                                         "flatten over the file's background)")
+        .option("depth", "BITS", "8 or 16: bits per channel of PNG and TIFF output (default 8)", 0, "8")
+        .option("view", "VIEW", "PNG/TIFF/JPEG/video: show the scene-linear values through this OCIO view (of "
+                                "--display) instead of the sRGB curve; needs --ocio FILE or $OCIO")
+        .option("display", "DISPLAY", "the OCIO display of --view (default: the config's default display)")
+        .option("ocio", "FILE", "the OCIO config of --view (default: $OCIO)")
         .option("progress", "MODE", io::kProgressHelp, 0, "auto")
         .epilog("Frames are reached through the index: rendering frames 500-510 decodes from the "
                 "key frame at or before 500 only. PNG, TIFF and JPEG are written 8-bit sRGB; EXR "
                 "half float scene-linear (the inverse of the sRGB curve). Every file is written "
-                "without a name until complete (a video: in a private folder) and then moved into place.");
+                "without a name until complete (a video: in a private folder) and then moved into place.\n\n"
+                "Alpha and scene-linear files (format 1.3): EXR gets half-float RGBA, premultiplied as OpenEXR "
+                "stores it (A = a/255); a scene-linear file's colours are its half floats exactly, values above "
+                "1 kept. PNG and TIFF get straight alpha: c = (255p + a/2)/a for 8-bit values (0 where a = 0); "
+                "scene-linear values are divided by the alpha and shown through the sRGB curve (no tone "
+                "mapping: above 1 clips), or through --view. JPEG has no alpha: it is flattened over the "
+                "file's background (a note says so) unless --background names another colour. Files "
+                "without alpha in 8-bit sRGB render as before 1.3.");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     io::ProgressMode mode;
     if (!io::parse_progress_mode(args.get("progress"), mode))
@@ -109,6 +149,19 @@ int cmd_render(int argc, char** argv) {
     long start = -1, single = -1;
     if (!args.get_long("start", start, 0, 999999999) || !args.get_long("frame", single, 0, 0x1FFFFFFFDL)) return 2;
     if (args.has("frame") && args.has("frames")) return args.usage_error("give --frame or --frames, not both");
+    io::CanvasImageOptions img;
+    if (args.has("background")) {
+        Rgb8 bg;
+        if (!parse_colour(args.get("background"), bg))
+            return args.usage_error("--background: expected R,G,B (0..255), RRGGBB or a colour name, got '" + args.get("background") + "'");
+        img.background = bg;
+    }
+    long depth = 8;
+    if (!args.get_long("depth", depth, 8, 16)) return 2;
+    if (depth != 8 && depth != 16) return args.usage_error("--depth: 8 or 16, got " + args.get("depth"));
+    img.depth = int(depth);
+    if ((args.has("display") || args.has("ocio")) && !args.has("view"))
+        return args.usage_error("--display and --ocio choose the OCIO view of --view: give --view VIEW");
     auto range = io::parse_frame_range(args.has("frame") ? args.get("frame") : args.get("frames"));
     if (!range) return args.usage_error(range.error().message);
 
@@ -117,6 +170,18 @@ int cmd_render(int argc, char** argv) {
     if (!video && !io::is_writable_image_name(sequence ? io::format_frame(out, 0) : out))
         return args.usage_error("-o " + out + ": unknown image extension (use .png, .exr, .tif, .jpg or a video extension)");
     if (!sequence && !video && args.has("start")) return args.usage_error("--start needs a sequence pattern in -o");
+    const std::string fmt = video ? "" : io::image_format_name(sequence ? io::format_frame(out, 0) : out);
+    if (fmt == "openexr" && args.has("view"))
+        return args.usage_error("--view applies to PNG, TIFF, JPEG and video output: EXR is written scene-linear");
+    if (depth == 16 && (video || (fmt != "png" && fmt != "tiff")))
+        return args.usage_error("--depth 16 applies to PNG and TIFF output");
+    std::unique_ptr<io::ViewTransform> view;
+    if (args.has("view")) {
+        auto v = io::ViewTransform::open({args.get("view"), args.get("display"), args.get("ocio")});
+        if (!v) return fail(v.error().message);
+        view = std::move(*v);
+        img.view = view.get();
+    }
 
     auto opened = io::open_spt(path);
     if (!opened) return fail(opened.error().message);
@@ -171,7 +236,7 @@ int cmd_render(int argc, char** argv) {
     for (long& f : todo) f -= first;  // file frame positions from here on
 
     if (auto rc = Renderer::create(h, r.info().templates); !rc) return fail(io::describe_error(path, rc.error()));
-    Canvas canvas(h.width, h.height, h.background);
+    Canvas canvas(h);
 
     VideoOut vout;
     std::string err;
@@ -190,11 +255,13 @@ int cmd_render(int argc, char** argv) {
             continue;
         }
         if (video) {
-            vout.write(canvas);
+            vout.write(canvas, h, img);
         } else {
             const std::string name = sequence ? io::format_frame(out, f + start) : out;
-            Status w = io::write_image(name, canvas);
+            std::string note;
+            Status w = io::write_canvas(name, canvas, h, img, done == 0 ? &note : nullptr);
             if (!w) return fail(w.error().message);
+            if (!note.empty()) std::fprintf(stderr, "spt render: note: %s\n", note.c_str());
         }
         progress.update(double(++done), "frame " + std::to_string(f + first));
     }

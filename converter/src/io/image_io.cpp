@@ -206,21 +206,12 @@ bool is_writable_image_name(const std::string& path) {
     return true;
 }
 
-Status write_image(const std::string& path, uint32_t width, uint32_t height, const uint8_t* rgb) {
-    if (width == 0 || height == 0 || !rgb)
-        return io_error(path, "cannot write an empty image", Code::InvalidArgument);
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out)
-        return io_error(path, "no image writer for this extension (" +
-                                  oiio_message(OIIO::geterror()) + ")",
-                        Code::InvalidArgument);
-    const std::string fmt = out->format_name();
-    const bool exr = fmt == "openexr";
-    OIIO::ImageSpec spec(int(width), int(height), 3, exr ? TypeDesc::HALF : TypeDesc::UINT8);
-    if (fmt == "jpeg") spec.attribute("CompressionQuality", 95);
-    if (exr) spec.attribute("compression", "zip");
-    spec.attribute("Software", "spt");
+namespace {
 
+// Encodes `data` (buftype samples, spec.nchannels a pixel) with the plugin `out` chose for
+// `path`, into memory, and writes the bytes through spt::AtomicFile.
+Status write_encoded(const std::string& path, std::unique_ptr<OIIO::ImageOutput> out, const OIIO::ImageSpec& spec,
+                     TypeDesc buftype, const void* data) {
     // The plugin was chosen from the final name. It encodes into memory (an OIIO IOProxy), and
     // the bytes go through spt::AtomicFile: no temporary name to redirect, none left if killed.
     // A plugin that cannot write to a proxy writes inside a fresh private folder instead.
@@ -241,23 +232,92 @@ Status write_image(const std::string& path, uint32_t width, uint32_t height, con
         named = std::move(*p);
         if (!out->open(named.file(), spec)) return fail("cannot create file: " + oiio_message(out->geterror()));
     }
-    bool ok;
-    const size_t n = size_t(width) * size_t(height) * 3;
-    if (exr) {
-        std::vector<float> f(n);
-        for (size_t i = 0; i < n; ++i) f[i] = rgb[i] / 255.f;
-        // sRGB -> linear, the inverse of read_image's transform.
-        transforms().to_linear->apply(f.data(), int(width), int(height), 3, sizeof(float),
-                                      3 * sizeof(float), 3 * sizeof(float) * width);
-        ok = out->write_image(TypeDesc::FLOAT, f.data());
-    } else {
-        ok = out->write_image(TypeDesc::UINT8, rgb);
-    }
-    if (!ok) return fail("cannot write pixels: " + oiio_message(out->geterror()));
+    if (!out->write_image(buftype, data)) return fail("cannot write pixels: " + oiio_message(out->geterror()));
     if (!out->close()) return fail("cannot finish file: " + oiio_message(out->geterror()));
     out.reset();
     if (in_memory) return write_file_atomic(path, bytes.data(), bytes.size());
     return named.commit();
+}
+
+Result<std::unique_ptr<OIIO::ImageOutput>> create_output(const std::string& path, uint32_t width, uint32_t height,
+                                                          const void* data) {
+    if (width == 0 || height == 0 || !data)
+        return io_error(path, "cannot write an empty image", Code::InvalidArgument);
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out)
+        return io_error(path, "no image writer for this extension (" + oiio_message(OIIO::geterror()) + ")",
+                        Code::InvalidArgument);
+    return out;
+}
+
+}  // namespace
+
+Status write_image(const std::string& path, uint32_t width, uint32_t height, const uint8_t* rgb) {
+    auto created = create_output(path, width, height, rgb);
+    if (!created) return created.error();
+    auto out = std::move(*created);
+    const std::string fmt = out->format_name();
+    const bool exr = fmt == "openexr";
+    OIIO::ImageSpec spec(int(width), int(height), 3, exr ? TypeDesc::HALF : TypeDesc::UINT8);
+    if (fmt == "jpeg") spec.attribute("CompressionQuality", 95);
+    if (exr) spec.attribute("compression", "zip");
+    spec.attribute("Software", "spt");
+    if (!exr) return write_encoded(path, std::move(out), spec, TypeDesc::UINT8, rgb);
+    const size_t n = size_t(width) * size_t(height) * 3;
+    std::vector<float> f(n);
+    for (size_t i = 0; i < n; ++i) f[i] = rgb[i] / 255.f;
+    // sRGB -> linear, the inverse of read_image's transform.
+    transforms().to_linear->apply(f.data(), int(width), int(height), 3, sizeof(float),
+                                  3 * sizeof(float), 3 * sizeof(float) * width);
+    return write_encoded(path, std::move(out), spec, TypeDesc::FLOAT, f.data());
+}
+
+Status write_pixels(const std::string& path, uint32_t width, uint32_t height, int channels, PixelType type,
+                    const void* data) {
+    if (channels != 3 && channels != 4) return io_error(path, "write_pixels: 3 or 4 channels", Code::InvalidArgument);
+    auto created = create_output(path, width, height, data);
+    if (!created) return created.error();
+    auto out = std::move(*created);
+    const std::string fmt = out->format_name();
+    const bool exr = fmt == "openexr";
+    const TypeDesc buf = type == PixelType::U8 ? TypeDesc::UINT8 : type == PixelType::U16 ? TypeDesc::UINT16 : TypeDesc::FLOAT;
+    const TypeDesc file = type == PixelType::Half ? TypeDesc::HALF : buf;
+    OIIO::ImageSpec spec(int(width), int(height), channels, file);
+    if (channels == 4) {
+        spec.alpha_channel = 3;
+        // Straight alpha as given: OIIO would otherwise take it as premultiplied and divide.
+        if (!exr) spec.attribute("oiio:UnassociatedAlpha", 1);
+    }
+    if (fmt == "jpeg") spec.attribute("CompressionQuality", 95);
+    if (exr) spec.attribute("compression", "zip");
+    spec.attribute("Software", "spt");
+    return write_encoded(path, std::move(out), spec, buf, data);
+}
+
+std::string image_format_name(const std::string& path) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) {
+        (void)OIIO::geterror();
+        return "";
+    }
+    return out->format_name();
+}
+
+bool image_supports_alpha(const std::string& path) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) {
+        (void)OIIO::geterror();
+        return false;
+    }
+    return out->supports("alpha");
+}
+
+void srgb_to_linear(float* rgb, size_t n) {
+    for (size_t at = 0; at < n;) {
+        const size_t k = std::min<size_t>(n - at, size_t(1) << 20);
+        transforms().to_linear->apply(rgb + at * 3, int(k), 1, 3, sizeof(float), 3 * sizeof(float), 3 * sizeof(float) * k);
+        at += k;
+    }
 }
 
 Status check_image_output(const std::string& path) {

@@ -54,9 +54,27 @@ const std::array<uint8_t, 65536>* half_to_srgb8();
 // PNG and TIFF are 8-bit, JPEG quality 95. The file is encoded in memory and written through
 // spt::AtomicFile, so a failed or killed write never leaves a partial file.
 Status write_image(const std::string& path, uint32_t width, uint32_t height, const uint8_t* rgb);
+// A plain canvas (8-bit sRGB, no alpha); io::write_canvas (io/canvas_image.hpp) writes any kind.
 inline Status write_image(const std::string& path, const Canvas& c) {
     return write_image(path, c.width, c.height, c.rgb.data());
 }
+
+// How write_pixels receives and stores samples: 8- or 16-bit integers, or floats stored as half.
+enum class PixelType { U8, U16, Half };
+
+// Writes `channels` interleaved channels (3: RGB; 4: RGBA, with straight alpha for every format
+// but EXR, premultiplied for EXR as OpenEXR stores it; the channels are named R, G, B, A) by
+// extension, through the same in-memory, atomic path as write_image. `data` holds width *
+// height * channels samples of uint8_t (U8), uint16_t (U16) or float (Half).
+Status write_pixels(const std::string& path, uint32_t width, uint32_t height, int channels, PixelType type,
+                    const void* data);
+// The OpenImageIO format name of a file's writer ("png", "openexr", "jpeg", ...), "" for none.
+std::string image_format_name(const std::string& path);
+// True when the writer for `path` stores an alpha channel (PNG, TIFF, EXR; not JPEG).
+bool image_supports_alpha(const std::string& path);
+// In place: `n` interleaved RGB values from sRGB-encoded to linear, the transform write_image
+// uses for EXR (OpenImageIO's built-in "sRGB" -> "linear").
+void srgb_to_linear(float* rgb, size_t n);
 
 // True when OpenImageIO has a writer for the file's extension.
 bool is_writable_image_name(const std::string& path);

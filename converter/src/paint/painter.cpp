@@ -57,6 +57,10 @@ int64_t sse_over(const Plane& p, const Domain& d) {
             const int v = int(p.canvas[i * 3 + c]) - int(p.model[i * 3 + c]);
             e += v * v;
         }
+        if (p.has_alpha()) {
+            const int v = int(p.canvas_a[i]) - int(p.model_a[i]);
+            e += (v > 0 ? p.alpha_weight : 1) * v * v;
+        }
         return e;
     };
     int64_t e = 0;
@@ -202,15 +206,22 @@ PaintStats paint(const ImageView& model, Canvas& canvas, const Renderer& rendere
     const uint32_t W = model.width, H = model.height;
     const size_t S = hd.sets.size(), T = setup.templates.size(), O = hd.orientations.size();
     st.strokes_per_set.assign(S, 0);
+    const bool alpha = hd.alpha;
     if (W == 0 || H == 0 || canvas.width != W || canvas.height != H || S == 0 || T == 0 || O == 0 ||
-        (region && region->size() != size_t(W) * H))
+        canvas.rgb.size() != size_t(W) * H * 3 || (region && region->size() != size_t(W) * H) ||
+        (alpha && (!model.alpha || canvas.alpha.size() != size_t(W) * H)))
         return st;
 
     const int step = std::clamp(opts.color_step, 1, 32);
     int threads = opts.threads > 0 ? opts.threads : int(std::thread::hardware_concurrency());
     WorkerPool pool(std::max(1, threads));
-    const Plane plane{W, H, model.rgb, canvas.rgb.data()};
-    const double samples = 3.0 * W * H;
+    Plane plane{W, H, model.rgb, canvas.rgb.data()};
+    if (alpha) {
+        plane.model_a = model.alpha;
+        plane.canvas_a = canvas.alpha.data();
+        plane.alpha_weight = std::clamp(opts.alpha_weight, 1, 1024);
+    }
+    const double samples = (alpha ? 4.0 : 3.0) * W * H;
     // A caller's field is used when it fits (right size, valid indices); otherwise our own.
     const std::vector<uint8_t>* given = opts.orient == OrientMode::Random ? nullptr : opts.orientation_field;
     if (given && (given->size() != size_t(W) * H ||

@@ -13,10 +13,13 @@
 
 namespace spt::paint {
 
-// An RGB8 image the painter reads (same layout as spt::Canvas).
+// An RGB8 image the painter reads (same layout as spt::Canvas). For a header with `alpha`
+// (format 1.3) it also has an alpha plane, and `rgb` is then premultiplied by it (colour under
+// transparent pixels is 0), as the painter's alpha canvas is.
 struct ImageView {
     uint32_t width = 0, height = 0;
     const uint8_t* rgb = nullptr;
+    const uint8_t* alpha = nullptr;  // width * height, 0..255; required when the header has alpha
 };
 
 enum class OrientMode { Edges, Gradient, Random };
@@ -49,6 +52,11 @@ struct PaintOptions {
     // stroke, the prediction of frame coding 2 (SPEC.md 7.7.5): a step of 4 saves about 6 bits
     // a stroke for a fraction of a dB. 1 = the exact least-squares colour.
     int color_step = 1;
+    // Alpha canvases: the weight (1..1024) of the alpha channel's squared error where the canvas
+    // is more opaque than the model (over-coverage, which over-compositing can never undo),
+    // against a colour channel's; under-coverage weighs 1. 32 measured (README.md "Alpha
+    // canvases").
+    int alpha_weight = 32;
 };
 
 enum class StopReason { Converged, MaxStrokes, TargetPsnr, Cancelled };
@@ -85,7 +93,12 @@ PaintSetup make_setup(uint32_t width, uint32_t height, Rgb8 background, std::vec
 // (Folders of the user's own templates are loaded by spt::io::load_templates, which reads images.)
 
 // Paints `model` onto `canvas` (which holds what is already painted: the background for a
-// still or a key frame, the previous frame for partial repainting). When `region` is not null,
+// still or a key frame, the previous frame for partial repainting). The canvas is 8-bit
+// (`rgb`); when setup.header.alpha it also has `alpha` (Canvas(header) makes both) and the
+// model has its alpha plane: the error then counts the alpha channel like a fourth colour
+// channel (PSNR over R, G, B, A). A header of colour encoding 1 is painted as if it were
+// encoding 0 (the 8-bit proxy of linear_proxy.hpp); linear_refit.hpp then gives the strokes
+// their linear colours. When `region` is not null,
 // candidates are drawn only where region[y*w+x] != 0. Appends the accepted strokes to `out` in
 // drawing order and draws them on `canvas`, exactly as `renderer` would.
 PaintStats paint(const ImageView& model, Canvas& canvas, const Renderer& renderer,

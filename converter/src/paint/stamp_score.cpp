@@ -29,8 +29,13 @@ Spans footprint_spans(const Mask& fp) {
     return s;
 }
 
-ColourSums colour_sums(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py,
-                       int32_t j0, int32_t j1) {
+namespace {
+
+// The plain and the alpha kernels are one template: the plain instantiation is the loop it
+// always was (no test per pixel), the alpha one adds the fourth channel.
+template <bool Alpha>
+ColourSums colour_sums_impl(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py,
+                            int32_t j0, int32_t j1) {
     // Integer sums are exact: a^2 <= 65025 and the numerators stay far below 2^63 for any
     // footprint the format allows.
     ColourSums s;
@@ -45,6 +50,7 @@ ColourSums colour_sums(const Plane& p, const Mask& fp, const Spans& sp, int32_t 
         const size_t base = (size_t(oy + j) * p.width + size_t(ox)) * 3;
         const uint8_t* m = p.model + base;
         const uint8_t* k = p.canvas + base;
+        const size_t abase = size_t(oy + j) * p.width + size_t(ox);
         int64_t r_saa = 0, r0 = 0, r1 = 0, r2 = 0, r_old = 0, r_sa = 0, c0 = 0, c1 = 0, c2 = 0;
         for (int32_t i = i0; i < i1; ++i) {
             const int32_t a = a_row[i];
@@ -59,14 +65,16 @@ ColourSums colour_sums(const Plane& p, const Mask& fp, const Spans& sp, int32_t 
             r2 += int64_t(a) * (255 * mi[2] - na * ki[2]);
             const int32_t d0 = ki[0] - mi[0], d1 = ki[1] - mi[1], d2 = ki[2] - mi[2];
             r_old += d0 * d0 + d1 * d1 + d2 * d2;
+            if constexpr (Alpha) {
+                const int32_t da = int32_t(p.canvas_a[abase + size_t(i)]) - p.model_a[abase + size_t(i)];
+                r_old += (da > 0 ? p.alpha_weight : 1) * da * da;
+            }
         }
         s.saa += r_saa; s.num[0] += r0; s.num[1] += r1; s.num[2] += r2; s.old_err += r_old;
         s.sa += r_sa; s.sac[0] += c0; s.sac[1] += c1; s.sac[2] += c2;
     }
     return s;
 }
-
-namespace {
 
 // The lattice point pred + step*k in 0..255 nearest the real optimum num / saa.
 int lattice(int64_t num, int64_t saa, int pred, int step) {
@@ -104,8 +112,11 @@ bool best_colour(const ColourSums& s, Rgb8& out, int step) {
     return true;
 }
 
-int64_t new_error(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py,
-                  int32_t j0, int32_t j1, Rgb8 col) {
+namespace {
+
+template <bool Alpha>
+int64_t new_error_impl(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py,
+                       int32_t j0, int32_t j1, Rgb8 col) {
     const Clip c = clip_footprint(fp, px, py, p.width, p.height);
     j0 = std::max(j0, c.j0);
     j1 = std::min(j1, c.j1);
@@ -118,6 +129,7 @@ int64_t new_error(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, i
         const size_t base = (size_t(oy + j) * p.width + size_t(ox)) * 3;
         const uint8_t* m = p.model + base;
         const uint8_t* k = p.canvas + base;
+        const size_t abase = size_t(oy + j) * p.width + size_t(ox);
         int64_t r_new = 0;
         for (int32_t i = i0; i < i1; ++i) {
             // Zero coverage leaves the pixel as it is: blend8(d, s, 0) == d, so including the
@@ -129,10 +141,28 @@ int64_t new_error(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, i
             const int32_t d1 = int32_t(blend8(ki[1], col.g, a)) - mi[1];
             const int32_t d2 = int32_t(blend8(ki[2], col.b, a)) - mi[2];
             r_new += d0 * d0 + d1 * d1 + d2 * d2;
+            if constexpr (Alpha) {
+                const int32_t da = int32_t(blend8(p.canvas_a[abase + size_t(i)], 255, a)) - p.model_a[abase + size_t(i)];
+                r_new += (da > 0 ? p.alpha_weight : 1) * da * da;
+            }
         }
         e += r_new;
     }
     return e;
+}
+
+}  // namespace
+
+ColourSums colour_sums(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py,
+                       int32_t j0, int32_t j1) {
+    return p.has_alpha() ? colour_sums_impl<true>(p, fp, sp, px, py, j0, j1)
+                         : colour_sums_impl<false>(p, fp, sp, px, py, j0, j1);
+}
+
+int64_t new_error(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py,
+                  int32_t j0, int32_t j1, Rgb8 col) {
+    return p.has_alpha() ? new_error_impl<true>(p, fp, sp, px, py, j0, j1, col)
+                         : new_error_impl<false>(p, fp, sp, px, py, j0, j1, col);
 }
 
 StampScore score_stamp(const Plane& p, const Mask& fp, const Spans& sp, int32_t px, int32_t py, int step) {
@@ -162,6 +192,10 @@ void commit_stamp(const Plane& p, const Mask& fp, int32_t px, int32_t py, Rgb8 c
             ki[0] = blend8(ki[0], color.r, a);
             ki[1] = blend8(ki[1], color.g, a);
             ki[2] = blend8(ki[2], color.b, a);
+        }
+        if (p.has_alpha()) {
+            uint8_t* ka = p.canvas_a + size_t(oy + j) * p.width + size_t(ox);
+            for (int32_t i = c.i0; i < c.i1; ++i) ka[i] = blend8(ka[i], 255, a_row[i]);
         }
     }
 }

@@ -16,12 +16,16 @@ namespace {
 
 // Checks a decoded frame against the first one's size.
 bool same_size(const io::Image& a, const io::Image& b) { return a.width == b.width && a.height == b.height; }
+bool same_size(const io::SceneImage& a, const io::SceneImage& b) { return a.width == b.width && a.height == b.height; }
 
 class SequenceSource final : public FrameSource {
 public:
     SequenceSource(std::string pattern, std::vector<long> numbers, std::map<long, std::string> files,
-                   bool skip)
-        : pattern_(std::move(pattern)), numbers_(std::move(numbers)), files_(std::move(files)), skip_(skip) {}
+                   bool skip, const io::SceneReadOptions* scene)
+        : pattern_(std::move(pattern)), numbers_(std::move(numbers)), files_(std::move(files)), skip_(skip),
+          scene_(scene != nullptr) {
+        if (scene) scene_opts_ = *scene;
+    }
 
     Result<bool> next(SourceFrame& out) override {
         if (pos_ >= numbers_.size()) return false;
@@ -33,6 +37,18 @@ public:
         const std::string path = f != files_.end() ? f->second : io::format_frame(pattern_, n);
         if (f == files_.end()) {
             problem = path + ": frame " + std::to_string(n) + " is missing from the sequence";
+        } else if (scene_) {
+            Result<io::SceneImage> img = io::read_scene_image(path, scene_opts_);
+            if (!img) {
+                problem = img.error().message;
+                if (problem.find(path) == std::string::npos) problem = path + ": " + problem;
+            } else if (have_prev_ && !same_size(*img, prev_scene_)) {
+                problem = path + ": frame " + std::to_string(n) + " is " + std::to_string(img->width) + "x" +
+                          std::to_string(img->height) + ", the sequence is " + std::to_string(prev_scene_.width) +
+                          "x" + std::to_string(prev_scene_.height);
+            } else {
+                out.scene = std::move(*img);
+            }
         } else {
             Result<io::Image> img = io::read_image(path);
             if (!img) {
@@ -51,11 +67,13 @@ public:
             if (!skip_ || !have_prev_)
                 return make_error(Code::IoError, problem + (skip_ ? " (the first frame cannot be skipped)" : ""));
             out.image = prev_;
+            out.scene = prev_scene_;
             out.repeated = true;
             out.problem = problem;
             return true;
         }
-        prev_ = out.image;
+        if (scene_) prev_scene_ = out.scene;
+        else prev_ = out.image;
         have_prev_ = true;
         return true;
     }
@@ -69,6 +87,9 @@ private:
     bool skip_;
     size_t pos_ = 0;
     io::Image prev_;
+    bool scene_ = false;
+    io::SceneReadOptions scene_opts_;
+    io::SceneImage prev_scene_;
     bool have_prev_ = false;
 };
 
@@ -141,10 +162,13 @@ private:
 }  // namespace
 
 Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const std::string& frames,
-                                                 bool skip_bad_frames) {
+                                                 bool skip_bad_frames, const io::SceneReadOptions* scene) {
     Result<io::FrameRange> range = io::parse_frame_range(frames);
     if (!range) return range.error();
     if (io::is_video_file(input)) {
+        if (scene)
+            return make_error(Code::InvalidArgument, input + ": alpha and scene-linear painting needs an image "
+                                                             "sequence (EXR, PNG, TIFF), not a video file");
         auto src = std::make_unique<VideoFileSource>(input, *range);
         Status st = src->open();
         if (!st) return st.error();
@@ -170,7 +194,7 @@ Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const
         for (const auto& [n, p] : by_number) numbers.push_back(n);
     }
     return std::unique_ptr<FrameSource>(
-        std::make_unique<SequenceSource>(input, std::move(numbers), std::move(by_number), skip_bad_frames));
+        std::make_unique<SequenceSource>(input, std::move(numbers), std::move(by_number), skip_bad_frames, scene));
 }
 
 }  // namespace spt::video

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/image_io.hpp"
+#include "io/scene_image.hpp"
 #include "io/sequence.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
@@ -15,7 +16,8 @@ namespace spt::video {
 
 struct SourceFrame {
     long number = 0;        // the input's frame number (sequence number, or video position)
-    io::Image image;        // 8-bit sRGB RGB
+    io::Image image;        // 8-bit sRGB RGB (sources opened without scene reading)
+    io::SceneImage scene;   // linear RGBA (sequences opened with scene reading, format 1.3)
     bool repeated = false;  // a bad frame replaced by the previous one (--skip-bad-frames)
     std::string problem;    // why it was repeated
 };
@@ -35,8 +37,10 @@ public:
 };
 
 // Opens a sequence pattern or folder (spt::io::list_sequence) or a video file
-// (spt::io::is_video_file, cv::VideoCapture). `frames` is "A-B" or empty.
+// (spt::io::is_video_file, cv::VideoCapture). `frames` is "A-B" or empty. With `scene`, a
+// sequence's frames are read with io::read_scene_image into SourceFrame::scene (video files
+// are then refused: they hold no alpha or scene-linear light).
 Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const std::string& frames,
-                                                 bool skip_bad_frames);
+                                                 bool skip_bad_frames, const io::SceneReadOptions* scene = nullptr);
 
 }  // namespace spt::video

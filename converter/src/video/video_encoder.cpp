@@ -67,18 +67,34 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptio
     h.sets = paint::default_sets(width, height, opts.sets);
     h.orientations = default_orientations(8);
     e->setup_.templates = opts.templates.empty() ? paint::default_templates() : opts.templates;
+    // Format 1.3 targets: the file's header says so; the painter paints an 8-bit proxy canvas
+    // (with alpha when the file has it) of the same geometry.
+    e->file_header_ = paint::scene_header(h, opts.scene);
+    e->linear_ = opts.scene.linear;
+    if (e->linear_) e->transform_ = paint::ProxyTransform::with_peak(opts.scene_peak);
+    h.alpha = opts.scene.alpha;
+    if (e->linear_) h.background = paint::proxy_background(opts.background, e->transform_);
+    // The band renderer copies 8-bit colour rows only: alpha canvases render whole frames.
+    e->opts_.incremental_render = opts.incremental_render && !h.alpha;
 
     Result<std::unique_ptr<Renderer>> r = Renderer::create(h, e->setup_.templates);
     if (!r) return r.error();
     e->renderer_ = std::move(*r);
-    if (opts.incremental_render) {
+    if (e->opts_.incremental_render) {
         Result<std::unique_ptr<BandRenderer>> b = BandRenderer::create(h, e->setup_.templates, *e->renderer_);
         if (!b) return b.error();
         e->band_ = std::move(*b);
     }
 
+    if (e->linear_) {
+        Result<std::unique_ptr<Renderer>> lr = Renderer::create(e->file_header_, e->setup_.templates);
+        if (!lr) return lr.error();
+        e->lin_renderer_ = std::move(*lr);
+        e->lin_canvas_ = Canvas(e->file_header_);
+    }
+
     StreamInfo info;
-    info.header = h;
+    info.header = e->file_header_;
     info.templates = e->setup_.templates;
     info.metadata = std::move(metadata);
     WriterOptions wo;
@@ -89,7 +105,7 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptio
 
     e->rois_ = std::move(rois);
     e->roi_used_.assign(e->rois_.size(), {-1, -1});
-    e->canvas_ = Canvas(width, height, opts.background);
+    e->canvas_ = Canvas(h);
     return e;
 }
 
@@ -119,9 +135,90 @@ void VideoEncoder::error_map(const paint::ImageView& model, cv::Mat& err) const 
     cv::absdiff(wrap_rgb(canvas_.width, canvas_.height, canvas_.rgb.data()),
                 wrap_rgb(model.width, model.height, model.rgb), diff);
     cv::Mat f;
-    diff.convertTo(f, CV_32FC3, 1.0 / 3.0);
-    cv::transform(f, err, cv::Matx13f(1.f, 1.f, 1.f));
+    if (model.alpha && canvas_.alpha.size() == size_t(model.width) * model.height) {
+        // Alpha canvases: the alpha channel counts like a fourth colour channel.
+        diff.convertTo(f, CV_32FC3, 1.0 / 4.0);
+        cv::transform(f, err, cv::Matx13f(1.f, 1.f, 1.f));
+        cv::Mat da, fa;
+        cv::absdiff(cv::Mat(int(model.height), int(model.width), CV_8U, const_cast<uint8_t*>(canvas_.alpha.data())),
+                    cv::Mat(int(model.height), int(model.width), CV_8U, const_cast<uint8_t*>(model.alpha)), da);
+        da.convertTo(fa, CV_32F, 1.0 / 4.0);
+        err += fa;
+    } else {
+        diff.convertTo(f, CV_32FC3, 1.0 / 3.0);
+        cv::transform(f, err, cv::Matx13f(1.f, 1.f, 1.f));
+    }
     cv::blur(err, err, cv::Size(7, 7));
+}
+
+Status VideoEncoder::remove_transparent(const paint::ImageView& model, Frame& frame, std::vector<Stroke>& moved) {
+    if (!model.alpha) return {};
+    const uint32_t W = model.width, H = model.height;
+    std::vector<uint32_t> extra;  // indices into moved
+    Mask scratch;
+    for (size_t k = 0; k < moved.size(); ++k) {
+        const Stroke& s = moved[k];
+        const Mask* m = &scratch;
+        int64_t ox = 0, oy = 0;
+        if (s.kind == StrokeKind::Stamp && s.stamp.color.a == 255) {
+            m = &renderer_->stamp_footprint(s.stamp.set, s.stamp.tmpl, s.stamp.orient);
+            ox = Renderer::stamp_pixel(s.stamp.x);
+            oy = Renderer::stamp_pixel(s.stamp.y);
+        } else if (Status st = renderer_->stroke_mask(s, scratch); !st) {
+            return st;
+        }
+        ox += m->x0;
+        oy += m->y0;
+        // Coverage on the canvas, and the part of it over pixels the source has at most a
+        // quarter opaque. A stroke entirely off the canvas has none and is left to the cull.
+        uint64_t all = 0, clear = 0;
+        const int64_t x0 = std::max<int64_t>(0, ox), y0 = std::max<int64_t>(0, oy);
+        const int64_t x1 = std::min<int64_t>(W, ox + int64_t(m->w)), y1 = std::min<int64_t>(H, oy + int64_t(m->h));
+        for (int64_t y = y0; y < y1; ++y) {
+            const uint8_t* a = m->a.data() + size_t(y - oy) * m->w;
+            const uint8_t* ma = model.alpha + size_t(y) * W;
+            for (int64_t x = x0; x < x1; ++x) {
+                all += a[x - ox];
+                if (ma[x] < 64) clear += a[x - ox];
+            }
+        }
+        if (all > 0 && double(clear) > opts_.transparent_share * double(all)) extra.push_back(uint32_t(k));
+    }
+    if (extra.empty()) return {};
+    // moved[k] is the k-th stroke of live_ the frame does not already remove.
+    std::vector<uint32_t> kept;
+    kept.reserve(moved.size());
+    size_t r = 0;
+    for (uint32_t i = 0; i < live_.size(); ++i) {
+        if (r < frame.removed.size() && frame.removed[r] == i) { ++r; continue; }
+        kept.push_back(i);
+    }
+    std::vector<uint32_t> removed = frame.removed;
+    for (uint32_t k : extra) removed.push_back(kept[k]);
+    std::sort(removed.begin(), removed.end());
+    frame.removed = std::move(removed);
+    moved = live_;
+    return apply_frame(moved, frame, setup_.header);
+}
+
+Status VideoEncoder::linear_frame(const paint::LinearView& linear, const Frame& frame, Frame& out) {
+    out = frame;
+    if (frame.type == FrameType::Key) {
+        live_lin_.clear();
+        lin_canvas_.reset(file_header_);
+    } else {
+        Frame edit = frame;
+        edit.added.clear();
+        if (Status st = apply_frame(live_lin_, edit, file_header_); !st) return st;
+        if (Status st = lin_renderer_->render(lin_canvas_, live_lin_, unsigned(std::max(0, opts_.paint.threads))); !st)
+            return st;
+    }
+    if (Status st = paint::refit_linear(linear, transform_, file_header_, *lin_renderer_, lin_canvas_, out.added,
+                                        opts_.scene.refit);
+        !st)
+        return st;
+    live_lin_.insert(live_lin_.end(), out.added.begin(), out.added.end());
+    return {};
 }
 
 void VideoEncoder::update_orientation(const paint::ImageView& model, const cv::Mat& map, const cv::Mat& region) {
@@ -163,7 +260,7 @@ Status VideoEncoder::encode_key(const paint::ImageView& model, Frame& frame, Fra
     frame.removed.clear();
     frame.motion = MotionField{};
     frame.added.clear();
-    canvas_.fill(opts_.background);
+    canvas_.reset(setup_.header);
     paint::PaintOptions po = frame_paint_options(r.source_number, r.index);
     auto t0 = Clock::now();
     update_orientation(model, cv::Mat(), cv::Mat());
@@ -194,6 +291,8 @@ Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& 
     // The moved list, exactly as the decoder will have it before the new strokes.
     std::vector<Stroke> moved = live_;
     Status st = apply_frame(moved, frame, setup_.header);
+    if (!st) return st;
+    st = remove_transparent(model, frame, moved);
     if (!st) return st;
     const unsigned threads = unsigned(std::max(0, opts_.paint.threads));
     if (band_) {
@@ -255,11 +354,14 @@ Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& 
     return {};
 }
 
-Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, long source_number) {
+Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, const uint8_t* alpha, const paint::LinearView* linear,
+                                            long source_number) {
     if (finished_) return make_error(Code::BadState, "video encoder already finished");
+    if ((setup_.header.alpha && !alpha) || (linear_ && (!linear || !linear->rgba)))
+        return make_error(Code::InvalidArgument, "video encoder: the frame lacks the alpha or linear planes its target needs");
     const auto t0 = Clock::now();
     const uint32_t w = setup_.header.width, h = setup_.header.height;
-    paint::ImageView model{w, h, rgb};
+    paint::ImageView model{w, h, rgb, setup_.header.alpha ? alpha : nullptr};
     FrameResult r;
     r.index = next_index_;
     r.source_number = source_number;
@@ -283,7 +385,14 @@ Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, long source_numb
         if (!st) return st.error();
         live_.clear();
     }
-    Status st = writer_->append(frame);
+    Status st;
+    if (linear_) {
+        Frame lin;
+        st = linear_frame(*linear, frame, lin);
+        if (st) st = writer_->append(lin);
+    } else {
+        st = writer_->append(frame);
+    }
     if (!st) return st.error();
     r.added = uint32_t(frame.added.size());
     if (opts_.frame_byte_budget > 0) {

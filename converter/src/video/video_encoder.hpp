@@ -56,13 +56,24 @@ public:
     ~VideoEncoder();
 
     // Paints and writes the next frame (RGB8, width * height * 3).
-    Result<FrameResult> add_frame(const uint8_t* rgb, long source_number);
+    Result<FrameResult> add_frame(const uint8_t* rgb, long source_number) {
+        return add_frame(rgb, nullptr, nullptr, source_number);
+    }
+    // The same for a format 1.3 target (VideoPaintOptions::scene): `rgb` is the frame's 8-bit
+    // proxy, premultiplied by `alpha` (width * height) on alpha canvases, and `linear` the
+    // frame itself for colour encoding 1 (both may be null when the target does not use them).
+    Result<FrameResult> add_frame(const uint8_t* rgb, const uint8_t* alpha, const paint::LinearView* linear,
+                                  long source_number);
     // Writes the ROI records, the index and the end; renames the output into place.
     Status finish();
     // Removes the partial output.
     void abort();
 
+    // The painter's canvas (8-bit; the proxy for a linear target) and, for colour encoding 1,
+    // the file's exact linear canvas.
     const Canvas& canvas() const { return canvas_; }
+    const Canvas& linear_canvas() const { return lin_canvas_; }
+    const Header& file_header() const { return file_header_; }
     const std::vector<Stroke>& live() const { return live_; }
     const paint::PaintSetup& setup() const { return setup_; }
     const Renderer& renderer() const { return *renderer_; }
@@ -75,13 +86,24 @@ private:
     Status encode_inter(const paint::ImageView& model, const cv::Mat& gray, Frame& frame, FrameResult& r,
                         bool& want_key);
     void error_map(const paint::ImageView& model, cv::Mat& err) const;
+    // Alpha canvases: adds to frame.removed (indices into live_) the strokes that, after the
+    // frame's removals and motion, lie mostly over transparent pixels of the model.
+    Status remove_transparent(const paint::ImageView& model, Frame& frame, std::vector<Stroke>& moved);
+    // Colour encoding 1: the frame as written, its new strokes refit against `linear`.
+    Status linear_frame(const paint::LinearView& linear, const Frame& frame, Frame& out);
     paint::PaintOptions frame_paint_options(long source_number, uint32_t index) const;
     // The orientation field for this frame's new strokes (see VideoPaintOptions); `map` is the
     // backward warp of the previous frame (empty on key frames), `region` the repaint mask.
     void update_orientation(const paint::ImageView& model, const cv::Mat& map, const cv::Mat& region);
 
     VideoPaintOptions opts_;
-    paint::PaintSetup setup_;
+    paint::PaintSetup setup_;   // the painter's (8-bit proxy) header
+    Header file_header_;        // the header written (format 1.3 targets differ from setup_'s)
+    bool linear_ = false;
+    paint::ProxyTransform transform_;
+    std::unique_ptr<Renderer> lin_renderer_;
+    std::vector<Stroke> live_lin_;  // live_ with the file's linear colours
+    Canvas lin_canvas_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<BandRenderer> band_;  // incremental update (VideoPaintOptions::incremental_render)
     std::unique_ptr<Writer> writer_;

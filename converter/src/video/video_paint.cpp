@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "io/sequence.hpp"
 #include "video/frame_source.hpp"
 #include "io/roi_file.hpp"
 #include "video/video_encoder.hpp"
@@ -19,6 +20,10 @@ namespace spt::video {
 namespace {
 
 std::atomic<bool> g_signal_stop{false};
+
+// The least peak of a sequence's linear proxy (paint/linear_proxy.hpp): a dark first frame
+// leaves room for highlights later.
+constexpr double kSequencePeakMin = 16.0;
 // The first signal asks for a clean stop after the current frame; a second one ends the
 // process the default way (the output then only exists as "<out>.partial", never under its
 // final name).
@@ -80,8 +85,38 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         if (!r) return r.error();
         rois = std::move(*r);
     }
-    Result<std::unique_ptr<FrameSource>> src = open_source(opts.input, opts.frames, opts.skip_bad_frames);
+    // Format 1.3 targets. "auto" is decided on the first file of the whole sequence (not of
+    // --frames), and so is the linear proxy's peak, so that every farm task of a plan paints
+    // the same way as one process would. Video files hold neither alpha nor scene-linear light.
+    if (opts.color_encoding != "auto" && opts.color_encoding != "srgb8" && opts.color_encoding != "linear")
+        return make_error(Code::InvalidArgument, "--color-encoding: expected auto, srgb8 or linear, got '" + opts.color_encoding + "'");
+    if (opts.alpha != "auto" && opts.alpha != "on" && opts.alpha != "off")
+        return make_error(Code::InvalidArgument, "--alpha: expected auto, on or off, got '" + opts.alpha + "'");
+    const bool want_scene = !(opts.color_encoding == "srgb8" && opts.alpha == "off") &&
+                            !(io::is_video_file(opts.input) && opts.color_encoding != "linear" && opts.alpha != "on");
+    paint::SceneTarget target = opts.scene;
+    bool scene = false;
+    double peak = 1.0;
+    if (want_scene && !io::is_video_file(opts.input)) {
+        Result<std::vector<io::SequenceFile>> all = io::list_sequence(opts.input);
+        if (!all) return all.error();
+        if (all->empty()) return make_error(Code::IoError, opts.input + ": no frames found");
+        Result<io::SceneImage> first = io::read_scene_image(all->front().path, opts.scene_read);
+        if (!first) return first.error();
+        const paint::LinearView lv{first->width, first->height, first->rgba.data()};
+        target.linear = opts.color_encoding == "linear" || (opts.color_encoding == "auto" && first->is_float);
+        target.alpha = opts.alpha == "on" || (opts.alpha == "auto" && first->has_alpha && paint::has_transparency(lv));
+        scene = target.linear || target.alpha;
+        // Headroom over the first frame for brighter frames later in the shot.
+        if (target.linear) peak = std::max(kSequencePeakMin, 2.0 * paint::proxy_for(lv).peak);
+    }
+    Result<std::unique_ptr<FrameSource>> src = open_source(opts.input, opts.frames, opts.skip_bad_frames,
+                                                           scene ? &opts.scene_read : nullptr);
     if (!src) return src.error();
+    SourceFrame frame;
+    Result<bool> got = (*src)->next(frame);
+    if (!got) return got.error();
+    if (!*got) return make_error(Code::IoError, (*src)->describe() + ": no frames to paint");
     FrameSource& source = **src;
 
     Rational fps{24, 1};
@@ -93,16 +128,13 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         fps = source.fps();
     }
 
-    SourceFrame frame;
-    Result<bool> got = source.next(frame);
-    if (!got) return got.error();
-    if (!*got) return make_error(Code::IoError, source.describe() + ": no frames to paint");
-
     std::vector<std::pair<std::string, std::string>> meta = {
         {"software", "spt video painter"},
         {"source", printable_text(opts.input)},  // names need not be UTF-8
         {"painter.seed", std::to_string(opts.paint.seed)},
-        {"painter.options", printable_text(options_text(opts))},
+        {"painter.options", printable_text(options_text(opts) + (scene ? std::string(" alpha=") + (target.alpha ? "on" : "off") +
+                                                                              " color-encoding=" + (target.linear ? "linear" : "srgb8")
+                                                                        : std::string()))},
     };
     // SPEC.md 3.3: the source's own frame numbers, when the painted frames are consecutive.
     if (frame.number > 0 && frames_consecutive(opts.frames)) meta.emplace_back(kFirstFrameKey, std::to_string(frame.number));
@@ -122,20 +154,33 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
                                                                                : uint64_t(opts.keyframe_interval));
         eo.frame_byte_budget = std::max(1.0, per_frame);
     }
-    Result<std::unique_ptr<VideoEncoder>> enc =
-        VideoEncoder::create(eo, frame.image.width, frame.image.height, fps, rois, meta);
+    eo.scene = scene ? target : paint::SceneTarget{};
+    eo.scene_peak = peak;
+    const uint32_t fw = scene ? frame.scene.width : frame.image.width, fh = scene ? frame.scene.height : frame.image.height;
+    Result<std::unique_ptr<VideoEncoder>> enc = VideoEncoder::create(eo, fw, fh, fps, rois, meta);
     if (!enc) return enc.error();
     VideoEncoder& encoder = **enc;
 
     progress.set_total(double(source.expected_frames()));
     uint64_t skipped = 0;
     bool interrupted = false;
+    std::vector<uint8_t> proxy_rgb, proxy_alpha;
     for (;;) {
         if (frame.repeated) {
             ++skipped;
             std::fprintf(stderr, "spt paint: warning: %s; repeating the previous frame\n", frame.problem.c_str());
         }
-        Result<FrameResult> r = encoder.add_frame(frame.image.rgb.data(), frame.number);
+        Result<FrameResult> r = make_error(Code::BadState, "no frame");
+        if (scene) {
+            // The frame's 8-bit proxy (premultiplied by its alpha), and the frame itself.
+            for (const std::string& w : frame.scene.warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
+            const paint::LinearView lv{frame.scene.width, frame.scene.height, frame.scene.rgba.data()};
+            const paint::ProxyTransform t = target.linear ? paint::ProxyTransform::with_peak(eo.scene_peak) : paint::ProxyTransform{};
+            paint::make_proxy(lv, t, proxy_rgb, target.alpha ? &proxy_alpha : nullptr);
+            r = encoder.add_frame(proxy_rgb.data(), target.alpha ? proxy_alpha.data() : nullptr, &lv, frame.number);
+        } else {
+            r = encoder.add_frame(frame.image.rgb.data(), frame.number);
+        }
         if (!r) {
             encoder.abort();
             Error e = r.error();

@@ -14,7 +14,9 @@
 #include <vector>
 
 #include "io/progress.hpp"
+#include "io/scene_image.hpp"
 #include "paint/painter.hpp"
+#include "paint/scene_paint.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
 
@@ -78,6 +80,23 @@ struct VideoPaintOptions {
     uint64_t target_bytes = 0;
     bool target_bytes_per_second = false;
     double frame_byte_budget = 0;     // bytes per frame; 0 = no rate control
+
+    // Compositing-grade output (format 1.3, issue 17): "auto" decides from the first frame of a
+    // sequence, linear for float frames and an alpha canvas when they have alpha; the frames
+    // are then read with io::read_scene_image(scene_read). Video files are always 8-bit.
+    std::string color_encoding = "srgb8";  // auto|srgb8|linear
+    std::string alpha = "off";             // auto|on|off
+    io::SceneReadOptions scene_read;
+    // What the encoder paints (video_paint sets them from the above; plain when neither):
+    // strokes on an alpha canvas, and colour encoding 1 through the 8-bit proxy of peak
+    // `scene_peak` (paint/linear_proxy.hpp; video_paint: twice the sequence's first file's
+    // peak, at least 16) with every frame's new strokes refit in linear.
+    paint::SceneTarget scene;
+    double scene_peak = 1.0;
+    // Alpha canvases: a live stroke whose coverage lies for more than this share on pixels the
+    // source now has (nearly) transparent is removed, since over-compositing can only add
+    // alpha: strokes of areas that became transparent do not linger.
+    double transparent_share = 0.34;
 
     // Farm plans (converter/src/plan): with false, key frames come only from the first frame,
     // the interval and repaint_key_fraction, never from the cut detector (the plan placed the cuts).

@@ -13,6 +13,7 @@
 //   spt/reader.hpp   Reader: open a file or buffer, seek to any frame, its live strokes, or
 //                    render_frame() (a player's call); apply_frame() (the state update)
 //   spt/render.hpp   Canvas and Renderer: strokes to RGB8 pixels, bit-exactly
+//   spt/display.hpp  a canvas of any kind as straight sRGB RGBA for a screen (viewers)
 //   spt/coding.hpp   Coding (how frame bodies are coded) and per-field bit counts
 //   spt/replay.hpp   the candidate generator of frame coding 2, for painters that want their
 //                    frames coded by which candidates they accepted
@@ -96,6 +97,7 @@
 
 #include "spt/color.hpp"
 #include "spt/coding.hpp"
+#include "spt/display.hpp"
 #include "spt/limits.hpp"
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
