@@ -1,10 +1,16 @@
 """File > Import > Stroke animation (.spt): builds one Grease Pencil object from a file.
 
-Layering: one layer per stroke set, coarse (bottom) to fine (top), then "shapes" (affine and
-polygon strokes, in their drawing order: shape painters overlap them) and "curves": an artist can hide, lock or retouch the detail pass apart from the under-painting.
-The file's exact drawing order is kept per stroke (its ordinal, see gp_v2.py), so export restores
-it even though inter frames interleave sets. layering='SINGLE' puts everything in one layer, whose
-viewport order is then exactly the file's.
+Layering 'SETS': one layer per stroke set, coarse (bottom) to fine (top), then "shapes" (affine and
+polygon strokes, in their drawing order: shape painters overlap them) and "curves": an artist can
+hide, lock or retouch the detail pass apart from the under-painting. 'KINDS' (flat-colour art, as
+`spt paint --style cartoon` paints it): "fills" (polygons), "lines" (curves), "paint" (stamps and
+affine strokes, the residual drawn over the fills). Per kind rather than per colour: a cartoon's
+regions are drawn largest first whatever their colour, so colour layers would each need strokes
+from below and above the others and the viewport would no longer match the file, while the kinds
+follow the painter's order (fills, then the residual). 'AUTO' takes KINDS when a frame holds a
+polygon, SETS otherwise. The file's exact drawing order is kept per stroke (its ordinal, see
+gp_v2.py), so export restores it even though inter frames interleave layers. 'SINGLE' puts
+everything in one layer, whose viewport order is then exactly the file's.
 """
 
 import os
@@ -106,12 +112,24 @@ def _scene_setup(context, info, count, start):
         bg.inputs["Color"].default_value = rgb + (1.0,)
 
 
+KIND_LAYERS = ("fills", "lines", "paint")  # bottom to top
+
+
+def resolve_layering(layering, tables):
+    """'AUTO' as KINDS when any frame holds a polygon (flat-colour art), else SETS."""
+    if layering != 'AUTO':
+        return layering
+    return 'KINDS' if any((t.rows[:, KIND] == POLYGON).any() for t in tables) else 'SETS'
+
+
 def _layer_keys(rows, layering, nsets):
     """Per stroke, the index of its layer key in the list ('set', i) * nsets + ['shapes', 'curves']
-    (SETS) or 0 (SINGLE)."""
+    (SETS), in KIND_LAYERS (KINDS) or 0 (SINGLE)."""
     if layering == 'SINGLE':
         return np.zeros(rows.shape[0], dtype=np.int64)
     kind = rows[:, KIND]
+    if layering == 'KINDS':
+        return np.where(kind == POLYGON, 0, np.where(kind == CURVE, 1, 2)).astype(np.int64)
     shapes = (kind == AFFINE) | (kind == POLYGON)
     return np.where(kind == STAMP, rows[:, SET], np.where(shapes, nsets, nsets + 1)).astype(np.int64)
 
@@ -138,7 +156,7 @@ def polygon_materials(obj, name, tables):
     return lookup
 
 
-def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', progress=None):
+def import_file(context, path: str, spt_path: str = "", layering: str = 'AUTO', progress=None):
     """Returns (object, summary dict). Raises SptError / SptToolError with a readable message.
     summary["seconds"] splits the time: read (spt pack --stored + Python reader + live lists),
     build (Grease Pencil data)."""
@@ -149,6 +167,7 @@ def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', 
     if not f.frames:
         raise SptError(f"{path}: the file holds no frames")
     tables = list(f.live_lists())  # StrokeTables; inter frames share nothing mutable
+    layering = resolve_layering(layering, tables)
     t1 = time.perf_counter()
     made = gp.snapshot()
     try:
@@ -156,7 +175,7 @@ def import_file(context, path: str, spt_path: str = "", layering: str = 'SETS', 
     except BaseException:
         gp.remove_since(made)  # nothing half-made stays in the scene
         raise
-    summary = {"frames": len(tables), "strokes": total_strokes, "layers": len(layer_of),
+    summary = {"frames": len(tables), "strokes": total_strokes, "layers": len(layer_of), "layering": layering,
                "templates": len(info.templates), "complete": f.complete, "problem": f.problem,
                "seconds": {"read": t1 - t0, "build": time.perf_counter() - t1}}
     return obj, summary
@@ -182,13 +201,21 @@ def _build(context, f, tables, path, layering, progress):
     mat_of_tmpl = np.array(tmat + [cmat_index], dtype=np.int32)
     mat_of_poly = polygon_materials(obj, name, tables)
 
-    # Layers bottom to top: the stroke sets used (coarse to fine), shapes, curves; or one layer.
+    # Layers bottom to top: the stroke sets used (coarse to fine), shapes, curves; the kinds used;
+    # or one layer.
     nsets = len(h.sets)
     used = np.zeros(nsets + 2, dtype=bool)
     for t in tables:
         used[np.unique(_layer_keys(t.rows, 'SETS', nsets))] = True
     if layering == 'SINGLE':
         layer_of = {0: gp.new_layer(obj, "strokes")}
+    elif layering == 'KINDS':
+        kinds = np.zeros(len(KIND_LAYERS), dtype=bool)
+        for t in tables:
+            kinds[np.unique(_layer_keys(t.rows, 'KINDS', nsets))] = True
+        if not kinds.any():
+            kinds[0] = True
+        layer_of = {k: gp.new_layer(obj, KIND_LAYERS[k]) for k in np.flatnonzero(kinds).tolist()}
     else:
         if not used.any():
             used[nsets + 1] = True

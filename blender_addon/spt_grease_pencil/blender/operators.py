@@ -12,6 +12,8 @@ from .. import spt_tool
 from .preferences import spt_path
 
 LAYERING = [
+    ('AUTO', "Automatic", "Per kind for flat-colour paintings (files with polygons), else per stroke set"),
+    ('KINDS', "Layer per kind", "Fills (polygons), lines (curves) and paint (stamps, affine strokes)"),
     ('SETS', "Layer per stroke set", "One layer per stroke set, coarse to fine, plus shapes and curves"),
     ('SINGLE', "Single layer", "All strokes in one layer, in the file's exact drawing order"),
 ]
@@ -57,7 +59,7 @@ class IMPORT_SCENE_OT_spt(bpy.types.Operator, ImportHelper):
 
     filename_ext = ".spt"
     filter_glob: StringProperty(default="*.spt", options={'HIDDEN'})
-    layering: EnumProperty(name="Layers", items=LAYERING, default='SETS')
+    layering: EnumProperty(name="Layers", items=LAYERING, default='AUTO')
 
     def execute(self, context):
         return do_import(self, context, self.filepath, self.layering)

@@ -29,7 +29,7 @@ class SPT_PaintSettings(bpy.types.PropertyGroup):
                         description="Regions of interest painted down to the finest set: JSON "
                               "{\"rois\":[{\"x\":..,\"y\":..,\"w\":..,\"h\":..}]}")
     seed: IntProperty(name="Seed", default=1, min=0, description="Same seed, same strokes")
-    layering: EnumProperty(name="Layers", items=LAYERING, default='SETS')
+    layering: EnumProperty(name="Layers", items=LAYERING, default='AUTO')
     progress: FloatProperty(name="Progress", subtype='PERCENTAGE', min=0.0, max=100.0, default=0.0)
     running: BoolProperty(default=False)
     cancel_requested: BoolProperty(default=False)
