@@ -14,6 +14,7 @@
 #include "cli/paint_plan.hpp"
 #include "cli/paint_progress.hpp"
 #include "cli/paint_scene_still.hpp"
+#include "cli/still_setup.hpp"
 #include "io/image_io.hpp"
 #include "io/trial_output.hpp"
 #include "io/sequence.hpp"
@@ -130,29 +131,12 @@ int paint_still(const PaintCommandOptions& o) {
     if (!img) return fail(img.error().message);
     const uint32_t W = img->width, H = img->height;
 
-    std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;
-    auto templates = paint_templates(o.templates_dir);
-    if (!templates) return fail(templates.error().message);
-    paint::PaintSetup setup = paint::make_setup(W, H, o.background, std::move(sets), std::move(*templates));
-
-    paint::PaintOptions po = o.paint;
-    po.rois.clear();
+    auto still = still_setup(o, W, H);
+    if (!still) return fail(still.error().message);
+    paint::PaintSetup setup = std::move(still->setup);
+    paint::PaintOptions po = std::move(still->paint);
     StreamInfo info;
-    for (const RoiSpec& r : o.rois) {
-        if (r.first_frame > 0) continue;  // a still is frame 0
-        if (int64_t(r.rect.x) >= W || int64_t(r.rect.y) >= H)
-            return fail("region of interest " + std::to_string(r.rect.x) + "," + std::to_string(r.rect.y) + "," +
-                        std::to_string(r.rect.w) + "," + std::to_string(r.rect.h) + " lies outside the " +
-                        std::to_string(W) + "x" + std::to_string(H) + " image");
-        po.rois.push_back(r.rect);
-        Roi roi;
-        roi.first_frame = roi.last_frame = 0;
-        roi.x = uint32_t(r.rect.x);
-        roi.y = uint32_t(r.rect.y);
-        roi.w = uint32_t(std::min<int64_t>(r.rect.w, int64_t(W) - r.rect.x));
-        roi.h = uint32_t(std::min<int64_t>(r.rect.h, int64_t(H) - r.rect.y));
-        info.rois.push_back(roi);
-    }
+    info.rois = std::move(still->rois);
 
     auto renderer = Renderer::create(setup.header, setup.templates);
     if (!renderer) return fail("cannot set up the renderer: " + renderer.error().message);

@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/paint_progress.hpp"
+#include "cli/still_setup.hpp"
 #include "io/image_io.hpp"
 #include "spt/color.hpp"
 #include "paint/rate_control.hpp"
@@ -123,28 +124,12 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
     const auto t0 = std::chrono::steady_clock::now();
     for (const std::string& w : img.warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
     const uint32_t W = img.width, H = img.height;
-    std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;
-    auto templates = paint_templates(o.templates_dir);
-    if (!templates) return fail(templates.error().message);
-    const paint::PaintSetup setup = paint::make_setup(W, H, o.background, std::move(sets), std::move(*templates));
-
-    paint::PaintOptions po = o.paint;
-    po.rois.clear();
+    auto still = still_setup(o, W, H);
+    if (!still) return fail(still.error().message);
+    const paint::PaintSetup setup = std::move(still->setup);
+    paint::PaintOptions po = std::move(still->paint);
     StreamInfo info;
-    for (const RoiSpec& r : o.rois) {
-        if (r.first_frame > 0) continue;  // a still is frame 0
-        if (int64_t(r.rect.x) >= W || int64_t(r.rect.y) >= H)
-            return fail("region of interest " + std::to_string(r.rect.x) + "," + std::to_string(r.rect.y) + "," +
-                        std::to_string(r.rect.w) + "," + std::to_string(r.rect.h) + " lies outside the " +
-                        std::to_string(W) + "x" + std::to_string(H) + " image");
-        po.rois.push_back(r.rect);
-        Roi roi;
-        roi.x = uint32_t(r.rect.x);
-        roi.y = uint32_t(r.rect.y);
-        roi.w = uint32_t(std::min<int64_t>(r.rect.w, int64_t(W) - r.rect.x));
-        roi.h = uint32_t(std::min<int64_t>(r.rect.h, int64_t(H) - r.rect.y));
-        info.rois.push_back(roi);
-    }
+    info.rois = std::move(still->rois);
     info.header = paint::scene_header(setup.header, target);
     info.templates = setup.templates;
     for (auto& [k, v] : metadata)

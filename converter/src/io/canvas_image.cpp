@@ -36,6 +36,27 @@ std::vector<uint8_t> flatten8(const Canvas& c, Rgb8 bg) {
     return rgb;
 }
 
+// Writes display-referred values (0..1, three a pixel) at `depth` bits, with the canvas's alpha
+// as the 4th channel when `keep_alpha`.
+Status write_display(const std::string& path, const Canvas& c, const std::vector<float>& v, int nch, bool keep_alpha,
+                     int depth) {
+    const size_t n = size_t(c.width) * c.height;
+    if (depth == 8) {
+        std::vector<uint8_t> px(n * nch);
+        for (size_t i = 0; i < n; ++i) {
+            for (int k = 0; k < 3; ++k) px[i * nch + k] = unit_to_u8(v[i * 3 + k]);
+            if (keep_alpha) px[i * 4 + 3] = c.alpha[i];
+        }
+        return write_pixels(path, c.width, c.height, nch, PixelType::U8, px.data());
+    }
+    std::vector<uint16_t> px(n * nch);
+    for (size_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) px[i * nch + k] = unit_to_u16(v[i * 3 + k]);
+        if (keep_alpha) px[i * 4 + 3] = uint16_t(c.alpha[i] * 257u);
+    }
+    return write_pixels(path, c.width, c.height, nch, PixelType::U16, px.data());
+}
+
 }  // namespace
 
 std::vector<uint8_t> canvas_rgb8(const Canvas& c, const Header& h, const CanvasImageOptions& o) {
@@ -142,20 +163,7 @@ Status write_canvas(const std::string& path, const Canvas& c, const Header& h, c
             return write_pixels(path, c.width, c.height, nch, PixelType::Half, px.data());
         }
         o.view->apply(lin.data(), n);
-        if (depth == 8) {
-            std::vector<uint8_t> px(n * nch);
-            for (size_t i = 0; i < n; ++i) {
-                for (int k = 0; k < 3; ++k) px[i * nch + k] = unit_to_u8(lin[i * 3 + k]);
-                if (keep_alpha) px[i * 4 + 3] = c.alpha[i];
-            }
-            return write_pixels(path, c.width, c.height, nch, PixelType::U8, px.data());
-        }
-        std::vector<uint16_t> px(n * nch);
-        for (size_t i = 0; i < n; ++i) {
-            for (int k = 0; k < 3; ++k) px[i * nch + k] = unit_to_u16(lin[i * 3 + k]);
-            if (keep_alpha) px[i * 4 + 3] = uint16_t(c.alpha[i] * 257u);
-        }
-        return write_pixels(path, c.width, c.height, nch, PixelType::U16, px.data());
+        return write_display(path, c, lin, nch, keep_alpha, depth);
     }
 
     // Encoding 1: scene-linear half codes, premultiplied on alpha canvases.
@@ -197,20 +205,7 @@ Status write_canvas(const std::string& path, const Canvas& c, const Header& h, c
     if (o.view) o.view->apply(lin.data(), n);
     else
         for (auto& v : lin) v = srgb_encode(v);
-    if (depth == 8) {
-        std::vector<uint8_t> px(n * nch);
-        for (size_t i = 0; i < n; ++i) {
-            for (int k = 0; k < 3; ++k) px[i * nch + k] = unit_to_u8(lin[i * 3 + k]);
-            if (keep_alpha) px[i * 4 + 3] = c.alpha[i];
-        }
-        return write_pixels(path, c.width, c.height, nch, PixelType::U8, px.data());
-    }
-    std::vector<uint16_t> px(n * nch);
-    for (size_t i = 0; i < n; ++i) {
-        for (int k = 0; k < 3; ++k) px[i * nch + k] = unit_to_u16(lin[i * 3 + k]);
-        if (keep_alpha) px[i * 4 + 3] = uint16_t(c.alpha[i] * 257u);
-    }
-    return write_pixels(path, c.width, c.height, nch, PixelType::U16, px.data());
+    return write_display(path, c, lin, nch, keep_alpha, depth);
 }
 
 }  // namespace spt::io
