@@ -1,6 +1,8 @@
 // Frame sequences named the way VFX tools name them (OpenImageIO / oiiotool conventions).
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +22,18 @@ struct FrameRange {
     // The frames of [lo, hi] the range selects, in the order the spans list them, without
     // repeats; an empty range selects all of [lo, hi]. At most `max_count` (then truncated).
     std::vector<long> frames_within(long lo, long hi, size_t max_count = 100000000) const;
+    // How many frames of a video of `total` frames (0: unknown, then the spans as given) the
+    // range selects; `total` itself when the range is empty. Steps are not counted (video
+    // sources read every frame of a span).
+    uint64_t count_in_video(uint64_t total) const {
+        if (empty()) return total;
+        uint64_t n = 0;
+        for (const auto& s : spans) {
+            const long hi = total ? std::min<long>(s.second, long(total) - 1) : s.second;
+            if (hi >= s.first) n += uint64_t(hi - s.first + 1);
+        }
+        return n;
+    }
 };
 Result<FrameRange> parse_frame_range(const std::string& text);
 

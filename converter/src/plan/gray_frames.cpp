@@ -87,15 +87,7 @@ public:
     }
     bool has_fps() const override { return fps_ > 0 && std::isfinite(fps_); }
     Rational fps() const override { return video::fps_from_double(fps_); }
-    uint64_t expected_frames() const override {
-        if (range_.empty()) return total_;
-        uint64_t n = 0;
-        for (const auto& s : range_.spans) {
-            const long hi = total_ ? std::min<long>(s.second, long(total_) - 1) : s.second;
-            if (hi >= s.first) n += uint64_t(hi - s.first + 1);
-        }
-        return n;
-    }
+    uint64_t expected_frames() const override { return range_.count_in_video(total_); }
     std::string describe() const override { return path_; }
 
 private:
