@@ -44,7 +44,8 @@ public:
     bool render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads, uint64_t work_limit) const;
     // Alpha canvases and colour encoding 1 (render_deep.cpp): stroke by stroke, exact.
     Status draw_deep(Canvas& canvas, const Stroke& s) const;
-    Status render_deep(Canvas& canvas, const std::vector<Stroke>& strokes) const;
+    Status draw_deep_rows(Canvas& canvas, const Stroke& s, int64_t ry0, int64_t ry1) const;  // rows [ry0, ry1) only
+    Status render_deep(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const;
     // Range and reference checks of one stroke (SPEC 8.7).
     Status check(const Stroke& s) const;
     // check(s) of a stamp, without the message: true when it passes.

@@ -352,7 +352,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes) 
 }
 
 Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, unsigned threads) const {
-    if (!header_.plain_color()) return render_deep(canvas, strokes);
+    if (!header_.plain_color()) return render_deep(canvas, strokes, threads);
     // Check and prepare every stroke (this also builds the footprints, so the tile pass only
     // reads shared state). On a bad stroke, the strokes before it are still drawn, as drawing
     // them one by one would have done, and the error names it.

@@ -184,3 +184,59 @@ TEST(LinearFiles, PartsOfDifferentAlphaDoNotJoin) {
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().message.find("alpha"), std::string::npos) << st.error().message;
 }
+
+// 1.3 canvases render in row bands on several threads: the same values as one thread, for every
+// stroke kind, and the same error (naming the stroke, those before it drawn) on a bad stroke.
+TEST(DeepRender, ThreadsGiveTheValuesOfOneThread) {
+    for (bool linear : {false, true}) {
+        Header h = linear_header(true);
+        h.width = 97; h.height = 61;
+        if (!linear) { h.color = ColorEncoding::Srgb8; h.background = {1, 2, 3}; }
+        Template e; e.kind = TemplateKind::Ellipse;
+        Template r; r.kind = TemplateKind::Rectangle; r.supersample = 3;
+        auto rd = Renderer::create(h, {e, r});
+        ASSERT_TRUE(rd.ok());
+        std::mt19937 rng(11);
+        auto colour = [&] {
+            return linear ? code_color(uint16_t(rng() % 0x7C00), uint16_t(rng() % 0x7C00), uint16_t(rng() % 0x7C00),
+                                       uint8_t(rng() % 2 ? 255 : rng() % 256))
+                          : Rgba8{uint8_t(rng()), uint8_t(rng()), uint8_t(rng()), uint8_t(rng() % 2 ? 255 : rng() % 256)};
+        };
+        std::vector<Stroke> strokes;
+        for (int i = 0; i < 300; ++i) {
+            const int32_t x = int32_t(rng() % (16 * 110)) - 100, y = int32_t(rng() % (16 * 70)) - 80;
+            switch (i % 4) {
+                case 0: { StampStroke s; s.x = x; s.y = y; s.tmpl = uint8_t(rng() % 2); s.orient = uint8_t(rng() % 4); s.color = colour();
+                          strokes.push_back(Stroke::make_stamp(s)); break; }
+                case 1: { AffineStroke a; a.tmpl = uint8_t(rng() % 2); a.tx = x; a.ty = y; a.a = 16 * 9; a.b = 30; a.c = -40; a.d = 16 * 5;
+                          a.color = colour(); strokes.push_back(Stroke::make_affine(a)); break; }
+                case 2: { CurveStroke c; c.color = colour(); c.points = {{x, y, 40}, {x + 300, y + 200, 8}};
+                          strokes.push_back(Stroke::make_curve(c)); break; }
+                default: { PolygonStroke p; p.color = colour(); p.supersample = 4; p.points = {{x, y}, {x + 400, y + 30}, {x + 90, y + 500}};
+                           strokes.push_back(Stroke::make_polygon(p)); break; }
+            }
+        }
+        Canvas one(h);
+        ASSERT_TRUE((*rd)->render(one, strokes, 1).ok());
+        for (unsigned t : {2u, 3u, 7u}) {
+            Canvas many(h);
+            ASSERT_TRUE((*rd)->render(many, strokes, t).ok());
+            EXPECT_EQ(many.rgb, one.rgb) << t;
+            EXPECT_EQ(many.rgb16, one.rgb16) << t;
+            EXPECT_EQ(many.alpha, one.alpha) << t;
+        }
+        std::vector<Stroke> bad(strokes.begin(), strokes.begin() + 50);
+        bad.push_back(strokes[0]);
+        bad.back().stamp.tmpl = 9;  // no such template
+        bad.insert(bad.end(), strokes.begin() + 50, strokes.end());
+        Canvas b1(h), b3(h);
+        auto s1 = (*rd)->render(b1, bad, 1), s3 = (*rd)->render(b3, bad, 3);
+        ASSERT_FALSE(s1.ok());
+        ASSERT_FALSE(s3.ok());
+        EXPECT_EQ(s1.error().message, s3.error().message);
+        EXPECT_NE(s3.error().message.find("stroke 50"), std::string::npos) << s3.error().message;
+        EXPECT_EQ(b1.rgb16, b3.rgb16);
+        EXPECT_EQ(b1.rgb, b3.rgb);
+        EXPECT_EQ(b1.alpha, b3.alpha);
+    }
+}
