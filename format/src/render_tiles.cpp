@@ -398,17 +398,32 @@ bool RendererImpl::render_stamps(Canvas& canvas, const detail::StampSource& src,
     const uint32_t S = uint32_t(header_.sets.size()), T = uint32_t(templates_.size());
     const uint32_t O = uint32_t(header_.orientations.size());
     uint64_t work = 0;  // at most 2^24 strokes of less than 2^36 each: no overflow
+    // The checks of stamp_valid() in one branch (|x|, |y| <= 2^24 by unsigned wrap-around).
+    constexpr uint32_t kMax = uint32_t(kMaxCoord);
+    if (src.packed) {
+        for (size_t i = 0; i < src.count; ++i) {
+            const uint8_t* q = src.packed + detail::kPackedStampBytes * i;
+            const uint32_t set = q[1], tmpl = q[2], orient = q[3];
+            const uint32_t x = detail::packed_u32(q + 4), y = detail::packed_u32(q + 8);
+            if ((q[0] != 0) | (set >= S) | (tmpl >= T) | (orient >= O) | (x + kMax > 2 * kMax) | (y + kMax > 2 * kMax))
+                return false;
+            const StampKind* k = binner.kind(uint8_t(set), uint8_t(tmpl), uint8_t(orient));
+            if (!k) return false;
+            work += k->work;
+            Rgba4 c;
+            c.r = q[12]; c.g = q[13]; c.b = q[14]; c.a = q[15];
+            binner.add_stamp(*k, int32_t(x), int32_t(y), c);
+        }
+    }
     // Batches small enough to stay in L1 between the decoder's writes and the binning's reads.
     constexpr size_t kBatch = 256;
     StampStroke batch[kBatch];
-    for (size_t first = 0; first < src.count; first += kBatch) {
+    for (size_t first = 0; !src.packed && first < src.count; first += kBatch) {
         const size_t n = std::min(kBatch, src.count - first);
         if (!src.fill(src.ctx, first, n, batch)) return false;
         for (size_t i = 0; i < n; ++i) {
             const StampStroke& t = batch[i];
             const uint32_t x = uint32_t(t.x), y = uint32_t(t.y);
-            // The checks of stamp_valid() in one branch (|x|, |y| <= 2^24 by unsigned wrap-around).
-            constexpr uint32_t kMax = uint32_t(kMaxCoord);
             if ((t.set >= S) | (t.tmpl >= T) | (t.orient >= O) | (x + kMax > 2 * kMax) | (y + kMax > 2 * kMax))
                 return false;
             const StampKind* k = binner.kind(t.set, t.tmpl, t.orient);

@@ -19,7 +19,18 @@ struct StampSource {
     size_t count = 0;
     const void* ctx = nullptr;
     bool (*fill)(const void* ctx, size_t first, size_t n, StampStroke* out) = nullptr;
+    // When not null: the same stamps as `count` records of kPackedStampBytes in the layout
+    // below, which the renderer reads in place instead of through fill() (a copy of every
+    // stamp costs the player's path about 5%).
+    const uint8_t* packed = nullptr;
 };
+
+// A packed stamp record (SPEC 6's stored stamp record): kind (0), set, template, orientation,
+// x, y (i32, little-endian), R, G, B, A.
+constexpr size_t kPackedStampBytes = 16;
+inline uint32_t packed_u32(const uint8_t* q) {
+    return uint32_t(q[0]) | uint32_t(q[1]) << 8 | uint32_t(q[2]) << 16 | uint32_t(q[3]) << 24;
+}
 
 // Renders a key frame of src.count stamps onto `canvas`: the same bytes as Renderer::render of
 // those stamps as Strokes (render_tiles.cpp). Returns false, having drawn nothing, when a stamp

@@ -173,6 +173,7 @@ bool stored_key_stamps(const uint8_t* body, size_t n, const Limits& limits, Stam
     out.count = added;
     out.ctx = body + 4;
     out.fill = fill_stamps;
+    out.packed = body + 4;  // coding 0's records are packed stamps (SPEC 6)
     return true;
 }
 

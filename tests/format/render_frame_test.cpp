@@ -78,7 +78,15 @@ bool render_records(const Renderer& r, Canvas& c, const std::vector<uint8_t>& re
     body.insert(body.end(), records.begin(), records.end());
     detail::StampSource src;
     if (!detail::stored_key_stamps(body.data(), body.size(), Limits{}, src)) return false;
-    return detail::render_stamp_frame(r, c, src, threads, work_limit);
+    const bool ok = detail::render_stamp_frame(r, c, src, threads, work_limit);
+    // The same through fill() (sources without packed records): same answer, same pixels.
+    detail::StampSource filled = src;
+    filled.packed = nullptr;
+    Canvas c2;
+    const bool ok2 = detail::render_stamp_frame(r, c2, filled, threads, work_limit);
+    EXPECT_EQ(ok2, ok);
+    if (ok && ok2) EXPECT_EQ(c2.rgb, c.rgb);
+    return ok;
 }
 
 }  // namespace
