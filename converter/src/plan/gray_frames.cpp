@@ -16,6 +16,7 @@
 #include "plan/ordered_prefetch.hpp"
 #include "video/frame_source.hpp"
 #include "video/video_paint.hpp"
+#include "video/video_reader.hpp"
 
 namespace spt::plan {
 
@@ -50,55 +51,26 @@ private:
 // fixed point whichever order they come in (tested against the painter's reader).
 class VideoGray final : public GrayFrames {
 public:
-    VideoGray(std::string path, io::FrameRange range) : path_(std::move(path)), range_(std::move(range)) {}
+    VideoGray(std::string path, io::FrameRange range) : video_(std::move(path), std::move(range)) {}
 
-    Status open() {
-        if (!cap_.open(path_)) return make_error(Code::IoError, path_ + ": OpenCV cannot open this video file");
-        fps_ = cap_.get(cv::CAP_PROP_FPS);
-        const double n = cap_.get(cv::CAP_PROP_FRAME_COUNT);
-        total_ = n > 0 && n < 1e9 ? uint64_t(n) : 0;
-        if (!range_.empty()) {
-            last_wanted_ = range_.spans.front().second;
-            for (const auto& s : range_.spans) last_wanted_ = std::max(last_wanted_, s.second);
-        }
-        return {};
-    }
+    Status open() { return video_.open(); }
 
     Result<bool> next(long& number, cv::Mat& gray) override {
-        for (;;) {
-            if (!range_.empty() && pos_ > last_wanted_) return false;
-            if (!range_.empty() && !range_.contains(pos_)) {
-                if (!cap_.grab()) return false;  // skipped frames are not converted
-                ++pos_;
-                continue;
-            }
-            if (!cap_.read(bgr_) || bgr_.empty()) return false;
-            break;
-        }
-        number = pos_++;
-        if (bgr_.depth() != CV_8U) bgr_.convertTo(bgr_, CV_8U);
+        if (!video_.next(number, bgr_)) return false;
         if (bgr_.channels() == 1) bgr_.copyTo(gray_);
         else cv::cvtColor(bgr_, gray_, bgr_.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
-        if (width_ == 0) { width_ = gray_.cols; height_ = gray_.rows; }
-        if (gray_.cols != width_ || gray_.rows != height_)
-            return make_error(Code::Corrupt, path_ + ": frame " + std::to_string(number) + " changes size");
+        if (Status st = video_.check_size(number, gray_.cols, gray_.rows); !st) return st.error();
         gray = gray_;  // shares the buffer: the caller reads it before the next call
         return true;
     }
-    bool has_fps() const override { return fps_ > 0 && std::isfinite(fps_); }
-    Rational fps() const override { return video::fps_from_double(fps_); }
-    uint64_t expected_frames() const override { return range_.count_in_video(total_); }
-    std::string describe() const override { return path_; }
+    bool has_fps() const override { return video_.fps() > 0 && std::isfinite(video_.fps()); }
+    Rational fps() const override { return video::fps_from_double(video_.fps()); }
+    uint64_t expected_frames() const override { return video_.expected_frames(); }
+    std::string describe() const override { return video_.path(); }
 
 private:
-    std::string path_;
-    io::FrameRange range_;
-    cv::VideoCapture cap_;
+    video::VideoReader video_;
     cv::Mat bgr_, gray_;
-    double fps_ = 0;
-    uint64_t total_ = 0;
-    long pos_ = 0, last_wanted_ = 0;
-    int width_ = 0, height_ = 0;
 };
 
 // A decoding thread's buffers, kept from file to file.

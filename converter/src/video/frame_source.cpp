@@ -9,6 +9,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "video/video_paint.hpp"
+#include "video/video_reader.hpp"
 
 namespace spt::video {
 
@@ -95,60 +96,33 @@ private:
 
 class VideoFileSource final : public FrameSource {
 public:
-    VideoFileSource(std::string path, io::FrameRange range) : path_(std::move(path)), range_(std::move(range)) {}
+    VideoFileSource(std::string path, io::FrameRange range) : video_(std::move(path), std::move(range)) {}
 
-    Status open() {
-        if (!cap_.open(path_)) return make_error(Code::IoError, path_ + ": OpenCV cannot open this video file");
-        fps_ = cap_.get(cv::CAP_PROP_FPS);
-        const double n = cap_.get(cv::CAP_PROP_FRAME_COUNT);
-        total_ = n > 0 && n < 1e9 ? uint64_t(n) : 0;
-        if (!range_.empty()) {
-            last_wanted_ = range_.spans.front().second;
-            for (const auto& s : range_.spans) last_wanted_ = std::max(last_wanted_, s.second);
-        }
-        return {};
-    }
+    Status open() { return video_.open(); }
 
     Result<bool> next(SourceFrame& out) override {
         cv::Mat bgr;
-        for (;;) {
-            if (!range_.empty() && pos_ > last_wanted_) return false;
-            if (!range_.empty() && !range_.contains(pos_)) {
-                if (!cap_.grab()) return false;  // skip without decoding to RGB
-                ++pos_;
-                continue;
-            }
-            if (!cap_.read(bgr) || bgr.empty()) return false;
-            break;
-        }
+        long number = 0;
+        if (!video_.next(number, bgr)) return false;
         out = SourceFrame{};
-        out.number = pos_++;
-        if (bgr.depth() != CV_8U) bgr.convertTo(bgr, CV_8U);
+        out.number = number;
         cv::Mat rgb;
         if (bgr.channels() == 1) cv::cvtColor(bgr, rgb, cv::COLOR_GRAY2RGB);
         else if (bgr.channels() == 4) cv::cvtColor(bgr, rgb, cv::COLOR_BGRA2RGB);
         else cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-        if (width_ == 0) { width_ = rgb.cols; height_ = rgb.rows; }
-        if (rgb.cols != width_ || rgb.rows != height_)
-            return make_error(Code::Corrupt, path_ + ": frame " + std::to_string(out.number) + " changes size");
+        if (Status st = video_.check_size(number, rgb.cols, rgb.rows); !st) return st.error();
         out.image.width = uint32_t(rgb.cols);
         out.image.height = uint32_t(rgb.rows);
         out.image.rgb.assign(rgb.data, rgb.data + rgb.total() * 3);
         return true;
     }
-    bool has_fps() const override { return fps_ > 0 && std::isfinite(fps_); }
-    Rational fps() const override { return fps_from_double(fps_); }
-    uint64_t expected_frames() const override { return range_.count_in_video(total_); }
-    std::string describe() const override { return path_; }
+    bool has_fps() const override { return video_.fps() > 0 && std::isfinite(video_.fps()); }
+    Rational fps() const override { return fps_from_double(video_.fps()); }
+    uint64_t expected_frames() const override { return video_.expected_frames(); }
+    std::string describe() const override { return video_.path(); }
 
 private:
-    std::string path_;
-    io::FrameRange range_;
-    cv::VideoCapture cap_;
-    double fps_ = 0;
-    uint64_t total_ = 0;
-    long pos_ = 0, last_wanted_ = 0;
-    int width_ = 0, height_ = 0;
+    VideoReader video_;
 };
 
 }  // namespace
