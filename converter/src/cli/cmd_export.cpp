@@ -20,10 +20,7 @@ bool ends_with(std::string s, const std::string& suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt export: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("export", msg); }
 
 }  // namespace
 

@@ -19,10 +19,7 @@ namespace spt::cli {
 
 namespace {
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt farm: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("farm", msg); }
 
 std::string self_exe() {
     char buf[PATH_MAX];

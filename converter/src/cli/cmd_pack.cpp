@@ -16,10 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt pack: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("pack", msg); }
 
 // Frame records equal field by field (Frame has no operator==: motion fields are compared
 // by value, the frame index by position).

@@ -32,10 +32,7 @@ namespace spt::cli {
 
 namespace {
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt paint: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("paint", msg); }
 
 }  // namespace
 

@@ -25,10 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt render: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("render", msg); }
 
 // --background: "R,G,B" (0..255, as spt paint's), a hex colour "RRGGBB" / "#RRGGBB" (as spt
 // import's) or an SVG colour name ("white", "black", ...: the SVG importer's parser).

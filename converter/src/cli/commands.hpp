@@ -3,7 +3,13 @@
 // 0 success, 1 failure of the work (bad input file, ...), 2 bad command line.
 #pragma once
 
+#include <string>
+
 namespace spt::cli {
+
+// Prints "spt COMMAND: MESSAGE" on stderr and returns 1, the exit status of failed work: the one
+// form every command's errors take.
+int command_failed(const char* command, const std::string& message);
 
 int cmd_info(int argc, char** argv);
 int cmd_verify(int argc, char** argv);

@@ -1,6 +1,7 @@
 // spt export -o page.html / -o folder/ --web (see export_web.hpp). The player's files are
 // compiled into spt (web/src/web_assets.hpp): the page is made from the very player and libspt
 // build that this spt carries, with nothing to locate at run time.
+#include "cli/commands.hpp"
 #include "cli/export_web.hpp"
 
 #include <OpenImageIO/strutil.h>
@@ -23,10 +24,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt export: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("export", msg); }
 
 bool ends_with_ci(std::string s, std::string_view suffix) {
     for (auto& c : s) c = char(std::tolower((unsigned char)c));

@@ -1,3 +1,4 @@
+#include "cli/commands.hpp"
 #include "cli/paint_cartoon.hpp"
 
 #include <chrono>
@@ -18,10 +19,7 @@ namespace spt::cli {
 
 namespace {
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt paint: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("paint", msg); }
 
 cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
     cartoon::FillOptions f;

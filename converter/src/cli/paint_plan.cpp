@@ -1,3 +1,4 @@
+#include "cli/commands.hpp"
 #include "cli/paint_plan.hpp"
 
 #include <cmath>
@@ -15,10 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt paint: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("paint", msg); }
 
 const char* mode_name(io::ProgressMode m) {
     switch (m) {

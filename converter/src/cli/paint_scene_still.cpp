@@ -20,10 +20,7 @@ namespace spt::cli {
 
 namespace {
 
-int fail(const std::string& msg) {
-    std::fprintf(stderr, "spt paint: %s\n", msg.c_str());
-    return 1;
-}
+int fail(const std::string& msg) { return command_failed("paint", msg); }
 
 io::SceneReadOptions read_options(const PaintCommandOptions& o) {
     io::SceneReadOptions r;
