@@ -226,6 +226,12 @@ std::vector<std::string> Args::pos_all(const std::string& name) const {
     return it == pos_values_.end() ? std::vector<std::string>{} : it->second;
 }
 
+bool Args::get_progress(io::ProgressMode& out) const {
+    if (io::parse_progress_mode(get("progress"), out)) return true;
+    usage_error("--progress: expected auto, plain, json or none");
+    return false;
+}
+
 bool Args::get_long(const std::string& name, long& out, long min, long max) const {
     if (!has(name)) return true;
     const std::string v = get(name);

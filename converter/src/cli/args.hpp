@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "io/progress.hpp"
+
 namespace spt::cli {
 
 class Args {
@@ -58,6 +60,8 @@ public:
     bool get_long(const std::string& name, long& out, long min = -2147483647L,
                   long max = 2147483647L) const;
     bool get_double(const std::string& name, double& out) const;
+    // --progress MODE (io::kProgressHelp): auto, plain, json or none.
+    bool get_progress(io::ProgressMode& out) const;
 
     // Prints "spt <command>: <msg>" and the --help hint to stderr; returns 2.
     int usage_error(const std::string& msg) const;

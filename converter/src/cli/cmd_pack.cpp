@@ -41,8 +41,7 @@ int cmd_pack(int argc, char** argv) {
                 "input frame by frame; on any difference it is deleted and the exit code is 1.");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     io::ProgressMode mode;
-    if (!io::parse_progress_mode(args.get("progress"), mode))
-        return args.usage_error("--progress: expected auto, plain, json or none");
+    if (!args.get_progress(mode)) return 2;
     const std::string in = args.pos("IN.spt"), out = args.get("output");
     if (out.empty()) return args.usage_error("missing -o OUT.spt");
     std::error_code ec;

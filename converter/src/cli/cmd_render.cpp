@@ -138,8 +138,7 @@ int cmd_render(int argc, char** argv) {
                 "without alpha in 8-bit sRGB render as before 1.3.");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     io::ProgressMode mode;
-    if (!io::parse_progress_mode(args.get("progress"), mode))
-        return args.usage_error("--progress: expected auto, plain, json or none");
+    if (!args.get_progress(mode)) return 2;
     const std::string path = args.pos("FILE.spt");
     const std::string out = args.get("output");
     if (out.empty()) return args.usage_error("missing -o OUT");

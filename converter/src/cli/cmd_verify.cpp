@@ -37,8 +37,7 @@ int cmd_verify(int argc, char** argv) {
                 "Exit 0 when the file is entirely sound, 1 otherwise.");
     if (int rc = args.parse(argc, argv); rc >= 0) return rc;
     io::ProgressMode mode;
-    if (!io::parse_progress_mode(args.get("progress"), mode))
-        return args.usage_error("--progress: expected auto, plain, json or none");
+    if (!args.get_progress(mode)) return 2;
     const std::string path = args.pos("FILE.spt");
 
     ReaderOptions ro;

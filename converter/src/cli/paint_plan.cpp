@@ -81,7 +81,7 @@ int paint_plan(int argc, char** argv) {
     const std::string out = a.get("output");
     if (out.empty()) return a.usage_error("missing -o OUT.spt");
     io::ProgressMode mode;
-    if (!io::parse_progress_mode(a.get("progress"), mode)) return a.usage_error("--progress: expected auto, plain, json or none");
+    if (!a.get_progress(mode)) return 2;
     long threads = 0, shot = -1;
     if (!a.get_long("threads", threads, 1, 1024) || !a.get_long("shot", shot, 0, 100000000)) return 2;
     Result<plan::Plan> p = plan::read_plan(a.get("plan"));
