@@ -7,6 +7,7 @@
 #include <random>
 
 #include "paint/painter.hpp"
+#include "quick_options.hpp"
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
 #include "synthetic.hpp"
@@ -82,14 +83,7 @@ TEST(BandRender, MovingSomeStrokesEqualsAFullRender) {
 TEST(BandRender, EncoderOnAStillShotMatchesTheDecoder) {
     const auto dir = spt_test::temp_dir("band");
     const uint32_t w = 96, h = 200;
-    VideoPaintOptions o;
-    o.output = (dir / "still.spt").string();
-    o.sets = 4;
-    o.paint.seed = 11;
-    o.paint.threads = 2;
-    o.paint.max_strokes = 600;
-    o.max_inter_strokes = 100;
-    o.install_signal_handlers = false;
+    VideoPaintOptions o = spt_test::quick_options((dir / "still.spt").string(), 11, 2, 600, 100);
     auto enc = VideoEncoder::create(o, w, h, Rational{24, 1});
     ASSERT_TRUE(enc.ok()) << enc.error().message;
     std::vector<std::vector<uint8_t>> canvases;

@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "io/image_io.hpp"
+#include "quick_options.hpp"
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
 #include "synthetic.hpp"
@@ -20,15 +21,8 @@ using namespace spt::video;
 namespace {
 
 VideoPaintOptions small_options(const std::string& out) {
-    VideoPaintOptions o;
-    o.output = out;
-    o.sets = 4;
-    o.paint.seed = 7;
-    o.paint.threads = 1;
-    o.paint.max_strokes = 400;
-    o.max_inter_strokes = 150;
+    VideoPaintOptions o = spt_test::quick_options(out, 7, 1, 400, 150);
     o.keyframe_interval = 100;
-    o.install_signal_handlers = false;
     return o;
 }
 

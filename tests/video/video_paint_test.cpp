@@ -8,6 +8,7 @@
 
 #include "io/image_io.hpp"
 #include "io/progress.hpp"
+#include "quick_options.hpp"
 #include "spt/reader.hpp"
 #include "synthetic.hpp"
 #include "video/video_paint.hpp"
@@ -18,15 +19,8 @@ using namespace spt::video;
 namespace {
 
 VideoPaintOptions options(const std::string& in, const std::string& out) {
-    VideoPaintOptions o;
+    VideoPaintOptions o = spt_test::quick_options(out, 3, 1, 300, 100);
     o.input = in;
-    o.output = out;
-    o.sets = 4;
-    o.paint.seed = 3;
-    o.paint.threads = 1;
-    o.paint.max_strokes = 300;
-    o.max_inter_strokes = 100;
-    o.install_signal_handlers = false;
     return o;
 }
 
