@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/image_io.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using spt::io::read_image;
@@ -19,18 +20,7 @@ using spt::io::write_image;
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() /
-               ("spt_io_image_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-};
+using spt_test::TempDir;
 
 // Writes `px` (w*h*nch values of `type`) with OpenImageIO directly.
 template <class T>

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "ocio_test_config.hpp"
+#include "temp_dir.hpp"
 #include "io/color_config.hpp"
 #include "io/exr_layers.hpp"
 #include "io/scene_image.hpp"
@@ -28,17 +30,7 @@ using spt::io::SceneReadOptions;
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("spt_scene_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-};
+using spt_test::TempDir;
 
 std::string media(const std::string& rel) { return std::string(SPT_MEDIA_DIR) + "/" + rel; }
 
@@ -87,37 +79,7 @@ std::string all_warnings(const SceneImage& img) {
 
 // A studio-style OCIO v2 config: lin_rec709 reference, ACEScg through OCIO's own built-in
 // AP1 -> Rec.709 (Bradford) transform, sRGB texture space.
-std::string write_aces_config(const TempDir& d) {
-    const std::string path = d.file("studio.ocio");
-    std::ofstream f(path);
-    f << R"(ocio_profile_version: 2
-roles:
-  default: lin_rec709
-  reference: lin_rec709
-  scene_linear: ACEScg
-file_rules:
-  - !<Rule> {name: Default, colorspace: default}
-displays:
-  sRGB:
-    - !<View> {name: Raw, colorspace: lin_rec709}
-colorspaces:
-  - !<ColorSpace>
-    name: lin_rec709
-    aliases: [Linear Rec.709 (sRGB)]
-    encoding: scene-linear
-  - !<ColorSpace>
-    name: ACEScg
-    aliases: [ACES - ACEScg, lin_ap1]
-    encoding: scene-linear
-    to_scene_reference: !<BuiltinTransform> {style: "UTILITY - ACES-AP1_to_LINEAR-REC709_BFD"}
-  - !<ColorSpace>
-    name: srgb_tx
-    aliases: [sRGB - Texture]
-    encoding: sdr-video
-    from_scene_reference: !<ExponentWithLinearTransform> {gamma: 2.4, offset: 0.055, direction: inverse}
-)";
-    return path;
-}
+std::string write_aces_config(const TempDir& d) { return spt_test::write_studio_ocio(d.file("studio.ocio")); }
 
 float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 

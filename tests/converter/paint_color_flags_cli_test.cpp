@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_test_util.hpp"
+#include "ocio_test_config.hpp"
 #include "spt/reader.hpp"
 
 using namespace spt_test;
@@ -25,27 +26,7 @@ std::string write_ppm(const TempDir& d) {
     return p;
 }
 
-std::string write_config(const TempDir& d) {
-    const std::string p = d.file("studio.ocio");
-    std::ofstream(p) << R"(ocio_profile_version: 2
-roles:
-  default: lin_rec709
-  reference: lin_rec709
-  scene_linear: ACEScg
-file_rules:
-  - !<Rule> {name: Default, colorspace: default}
-displays:
-  sRGB:
-    - !<View> {name: Raw, colorspace: lin_rec709}
-colorspaces:
-  - !<ColorSpace>
-    name: lin_rec709
-  - !<ColorSpace>
-    name: ACEScg
-    to_scene_reference: !<BuiltinTransform> {style: "UTILITY - ACES-AP1_to_LINEAR-REC709_BFD"}
-)";
-    return p;
-}
+std::string write_config(const TempDir& d) { return write_studio_ocio(d.file("studio.ocio")); }
 
 std::string painter_options(const std::string& spt_path) {
     auto r = spt::Reader::open(spt_path);
