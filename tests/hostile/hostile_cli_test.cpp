@@ -333,18 +333,24 @@ TEST(HostileCli, AnUnwritablePreviewIsRefusedBeforeTheSptIsWritten) {
 // one folder, or a user's file of that name, collided, and the user's file was deleted. The
 // trials now go to an unnamed file: whatever has that name is untouched, nothing else appears.
 TEST(HostileCli, ATargetSizePaintLeavesOtherNamesAlone) {
-    for (const char* style : {"painterly", "cartoon"}) {
+    // The 8-bit painter, the cartoon painter, and the alpha / scene-linear (format 1.3) painter.
+    const std::vector<std::vector<std::string>> paints = {
+        {"--style", "painterly"}, {"--style", "cartoon"}, {"--alpha", "on", "--color-encoding", "linear"}};
+    for (const auto& how : paints) {
+        const std::string style = how[1] == "on" ? "linear alpha" : how[1];
         TempDir d;
         { std::ofstream(d.file("o.spt.rate-search")) << "mine"; }
         fs::create_symlink("victim.txt", d.path / "o.spt.partial");
-        auto r = run_spt(d, {"paint", input("good.png"), "-o", d.file("o.spt"), "--style", style, "--target-bytes", "700"});
+        std::vector<std::string> args = {"paint", input("good.png"), "-o", d.file("o.spt"), "--target-bytes", "700"};
+        args.insert(args.end(), how.begin(), how.end());
+        auto r = run_spt(d, args);
         ASSERT_EQ(r.code, 0) << style << ": " << r.err;
         EXPECT_EQ(slurp(d.file("o.spt.rate-search")), "mine") << style;
         EXPECT_EQ(names(d), (Names{"o.spt", "o.spt.partial", "o.spt.rate-search"})) << style;
         EXPECT_FALSE(fs::exists(d.path / "victim.txt")) << style;
         // The trials were measured: the still painter's search reports the size of the best
         // trial, which the final paint (the same lambda) reproduces byte for byte.
-        if (style == std::string("painterly"))
+        if (style == "painterly")
             EXPECT_HAS(r.err, "gives " + std::to_string(fs::file_size(d.path / "o.spt")) + " bytes");
         EXPECT_EQ(run_spt(d, {"verify", d.file("o.spt")}).code, 0) << style;
     }

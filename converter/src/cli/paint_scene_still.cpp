@@ -12,6 +12,7 @@
 #include "cli/paint_progress.hpp"
 #include "cli/still_setup.hpp"
 #include "io/image_io.hpp"
+#include "io/trial_output.hpp"
 #include "spt/color.hpp"
 #include "paint/rate_control.hpp"
 #include "spt/writer.hpp"
@@ -138,8 +139,8 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
     const paint::LinearView view{W, H, img.rgba.data()};
 
     auto write = [&](const std::string& path, const paint::ScenePainting& sp, const paint::PaintOptions& opts,
-                     uint64_t& bytes) -> Status {
-        auto w = Writer::create(path, info, wo);
+                     uint64_t& bytes, const WriterOptions& how) -> Status {
+        auto w = Writer::create(path, info, how);
         if (!w) return w.error();
         Frame f;
         f.added = sp.strokes;
@@ -154,7 +155,12 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
         return {};
     };
     if (o.target_bytes > 0) {
-        const std::string scratch = o.output + ".rate-search";
+        // Trials go to an unnamed file that is never linked (io/trial_output.hpp): nothing is
+        // left behind, and no file of the user's is touched.
+        auto trial_file = io::TrialOutput::create(o.output);
+        if (!trial_file) return fail(trial_file.error().message);
+        WriterOptions two = wo;
+        two.atomic_rename = false;
         auto trial = [&](double lambda) {
             paint::PaintOptions tp = po;
             tp.lambda = lambda;
@@ -164,8 +170,7 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
             if (!sp) return p;
             p.psnr = sp->stats.psnr;
             uint64_t bytes = 0;
-            if (write(scratch, *sp, tp, bytes)) p.bytes = bytes;
-            std::filesystem::remove(scratch);
+            if (write(trial_file->path(), *sp, tp, bytes, two)) p.bytes = bytes;
             return p;
         };
         const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes, 0.03, 9, po.lambda);
@@ -183,7 +188,7 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
         return fail(sp.error().message);
     }
     uint64_t bytes = 0;
-    if (Status s = write(o.output, *sp, po, bytes); !s) {
+    if (Status s = write(o.output, *sp, po, bytes, wo); !s) {
         progress.finish(false, sp->stats.strokes, sp->stats.psnr, s.error().message);
         return fail(s.error().message);
     }
