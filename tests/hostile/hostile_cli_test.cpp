@@ -253,6 +253,8 @@ std::vector<Writing> writing_commands() {
         {"export json", {"export", golden("inter_motion.spt"), "-o"}, "o.json", {}},
         {"export svg", {"export", golden("inter_motion.spt"), "--frames", "2", "-o"}, "o.svg", {}},
         {"render", {"render", golden("inter_motion.spt"), "-o"}, "o.png", {}},
+        {"render exr of a 1.3 file", {"render", golden("linear_alpha.spt"), "-o"}, "o.exr", {}},
+        {"plan", {"plan", std::string(SPT_MEDIA_DIR) + "/exr/orbit/orbit.####.exr", "--frames", "1-3", "-o"}, "o.plan.json", {}},
     };
 }
 std::vector<std::string> args_of(const Writing& w, const TempDir& d, const std::string& out) {

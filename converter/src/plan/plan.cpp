@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "io/json.hpp"
+#include "spt/atomic_file.hpp"
 #include "spt_json/json.hpp"
 
 namespace spt::plan {
@@ -188,22 +189,10 @@ Result<Plan> read_plan(const std::string& path) {
 }
 
 Status write_plan(const Plan& p, const std::string& path) {
-    const std::string tmp = path + ".partial";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return make_error(Code::IoError, tmp + ": cannot create: " + std::strerror(errno));
-        out << to_json(p);
-        out.close();
-        if (!out) {
-            std::remove(tmp.c_str());
-            return make_error(Code::IoError, tmp + ": write failed");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        return make_error(Code::IoError, path + ": cannot rename " + tmp + " into place: " + std::strerror(errno));
-    }
-    return {};
+    // Through an unnamed temporary linked into place (spt/atomic_file.hpp): never half-written,
+    // and no symlink at a temporary name can redirect it.
+    const std::string text = to_json(p);
+    return write_file_atomic(path, text.data(), text.size());
 }
 
 std::vector<std::pair<long, long>> split_shot(long first, long last, int keyframe_interval, long max_frames) {
