@@ -358,6 +358,22 @@ TEST(HostileCli, ATargetSizePaintLeavesOtherNamesAlone) {
     }
 }
 
+// spt paint --plan without --shot painted its shots into the fixed folder OUT.shots.partial,
+// deleting whatever had that name first. The shots now go to a fresh mkdtemp folder.
+TEST(HostileCli, PaintingAPlanLeavesOtherNamesAlone) {
+    TempDir d;
+    auto r = run_spt(d, {"plan", std::string(SPT_MEDIA_DIR) + "/exr/orbit/orbit.####.exr", "--frames", "1-4",
+                         "--max-task-frames", "2", "-o", d.file("p.json")});
+    ASSERT_EQ(r.code, 0) << r.err;
+    fs::create_directories(d.path / "o.spt.shots.partial");
+    { std::ofstream(d.file("o.spt.shots.partial/mine")) << "mine"; }
+    r = run_spt(d, {"paint", "--plan", d.file("p.json"), "-o", d.file("o.spt")});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(slurp(d.file("o.spt.shots.partial/mine")), "mine");
+    EXPECT_EQ(names(d), (Names{"o.spt", "o.spt.shots.partial", "p.json"}));
+    EXPECT_EQ(run_spt(d, {"verify", d.file("o.spt")}).code, 0);
+}
+
 // ---- signals ----
 
 // Killed mid-paint (SIGKILL cannot be caught; SIGINT's default ends the process): the output

@@ -1,7 +1,6 @@
 // spt export -o page.html / -o folder/ --web (see export_web.hpp). The player's files are
 // compiled into spt (web/src/web_assets.hpp): the page is made from the very player and libspt
 // build that this spt carries, with nothing to locate at run time.
-#include "cli/commands.hpp"
 #include "cli/export_web.hpp"
 
 #include <OpenImageIO/strutil.h>
@@ -14,6 +13,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "cli/commands.hpp"
 #include "io/spt_file.hpp"
 #include "spt_import/export.hpp"
 #include "web_assets.hpp"

@@ -1,4 +1,3 @@
-#include "cli/commands.hpp"
 #include "cli/paint_cartoon.hpp"
 
 #include <chrono>
@@ -8,6 +7,7 @@
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/cartoon_sequence.hpp"
+#include "cli/commands.hpp"
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
 #include "io/trial_output.hpp"

@@ -1,12 +1,16 @@
-#include "cli/commands.hpp"
 #include "cli/paint_plan.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 
 #include "cli/args.hpp"
+#include "cli/commands.hpp"
 #include "plan/plan_parts.hpp"
+#include "spt/atomic_file.hpp"
 #include "spt/concat.hpp"
 #include "spt/version.hpp"
 
@@ -94,12 +98,15 @@ int paint_plan(int argc, char** argv) {
             return a.usage_error("--shot " + std::to_string(shot) + ": the plan has shots 0-" + std::to_string(p->shots.size() - 1));
         return paint_shot(*p, size_t(shot), out, int(threads), mode);
     }
-    // Every shot in this process, then the join: the farm's result on one machine.
-    const fs::path dir = out + ".shots.partial";
+    // Every shot in this process, then the join: the farm's result on one machine. The shots go to
+    // a fresh folder beside the output (mkdtemp: a name nobody else chose, so no folder or
+    // symlink of the user's is touched); a killed process leaves it, ".NAME.shots-XXXXXX".
+    if (Status c = spt::check_output_path(out); !c) return fail(c.error().message);
+    const fs::path target(out);
+    std::string templ = (target.parent_path() / ("." + target.filename().string() + ".shots-XXXXXX")).string();
+    if (!::mkdtemp(templ.data())) return fail(templ + ": cannot create a folder for the shots: " + std::strerror(errno));
+    const fs::path dir = templ;
     std::error_code ec;
-    fs::remove_all(dir, ec);
-    fs::create_directories(dir, ec);
-    if (ec) return fail(dir.string() + ": cannot create: " + ec.message());
     std::vector<std::string> parts;
     for (size_t k = 0; k < p->shots.size(); ++k) {
         char name[32];
