@@ -15,6 +15,7 @@
 #include "byte_source.hpp"
 #include "container.hpp"
 #include "validate.hpp"
+#include "spt/atomic_file.hpp"
 
 namespace spt {
 
@@ -113,38 +114,53 @@ Result<Part> open_part(const std::string& path, const ReaderOptions& ro) {
 class Output {
 public:
     ~Output() {
-        if (f_) std::fclose(f_);
-        if (!done_ && !tmp_.empty()) std::remove(tmp_.c_str());
+        if (f_ && !atomic_) std::fclose(f_);
+        if (!done_ && !atomic_ && !path_.empty()) std::remove(path_.c_str());
     }
+    // `atomic`: through an AtomicFile, linked into place by finish() (never half-written, no
+    // temporary name a symlink could redirect); else straight to `path`.
     Status open(const std::string& path, bool atomic) {
         path_ = path;
-        tmp_ = atomic ? path + ".partial" : path;
-        f_ = std::fopen(tmp_.c_str(), "wb");
-        if (!f_) return make_error(Code::IoError, tmp_ + ": cannot create: " + std::strerror(errno));
+        atomic_ = atomic;
+        if (atomic) {
+            auto a = AtomicFile::create(path);
+            if (!a) return a.error();
+            file_ = std::move(*a);
+            f_ = file_.stream();
+            return {};
+        }
+        f_ = std::fopen(path.c_str(), "wb");
+        if (!f_) return make_error(Code::IoError, path + ": cannot create: " + std::strerror(errno));
         return {};
     }
     Status write(const uint8_t* p, size_t n) {
         if (n && std::fwrite(p, 1, n, f_) != n)
-            return make_error(Code::IoError, tmp_ + ": write failed at byte offset " + std::to_string(pos_) + ": " +
+            return make_error(Code::IoError, path_ + ": write failed at byte offset " + std::to_string(pos_) + ": " +
                                                  std::strerror(errno));
         pos_ += n;
         return {};
     }
     Status write(const std::vector<uint8_t>& b) { return write(b.data(), b.size()); }
     Status finish() {
+        if (atomic_) {
+            f_ = nullptr;
+            if (Status st = file_.commit(); !st) return st;
+            done_ = true;
+            return {};
+        }
         const bool flushed = std::fflush(f_) == 0;
         const bool closed = std::fclose(f_) == 0;
         f_ = nullptr;
-        if (!flushed || !closed) return make_error(Code::IoError, tmp_ + ": cannot close: " + std::strerror(errno));
-        if (tmp_ != path_ && std::rename(tmp_.c_str(), path_.c_str()) != 0)
-            return make_error(Code::IoError, path_ + ": cannot rename " + tmp_ + " into place: " + std::strerror(errno));
+        if (!flushed || !closed) return make_error(Code::IoError, path_ + ": cannot close: " + std::strerror(errno));
         done_ = true;
         return {};
     }
     uint64_t pos() const { return pos_; }
 
 private:
-    std::string path_, tmp_;
+    std::string path_;
+    bool atomic_ = true;
+    AtomicFile file_;  // discarded unless finish() commits it
     std::FILE* f_ = nullptr;
     uint64_t pos_ = 0;
     bool done_ = false;

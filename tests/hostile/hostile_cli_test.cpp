@@ -254,6 +254,7 @@ std::vector<Writing> writing_commands() {
         {"export svg", {"export", golden("inter_motion.spt"), "--frames", "2", "-o"}, "o.svg", {}},
         {"render", {"render", golden("inter_motion.spt"), "-o"}, "o.png", {}},
         {"render exr of a 1.3 file", {"render", golden("linear_alpha.spt"), "-o"}, "o.exr", {}},
+        {"cat", {"cat", golden("inter_motion.spt"), golden("inter_motion.stored.spt"), "-o"}, "o.spt", {}},
         {"plan", {"plan", std::string(SPT_MEDIA_DIR) + "/exr/orbit/orbit.####.exr", "--frames", "1-3", "-o"}, "o.plan.json", {}},
     };
 }

@@ -31,7 +31,8 @@ Result<StreamInfo> join_info(const std::vector<StreamInfo>& parts, const std::ve
                              const std::vector<std::string>& names, std::vector<std::string>* warnings = nullptr);
 
 struct ConcatOptions {
-    // Write "<output>.partial" and rename it into place when complete.
+    // Write through an spt::AtomicFile, linked into place when complete (never half-written, no
+    // temporary name); false writes straight to the output.
     bool atomic_rename = true;
     ReaderOptions reader;
     // Called for every part once its header has been read and before anything is written:
