@@ -10,6 +10,7 @@
 #include "farm/process.hpp"
 #include "io/json.hpp"
 #include "plan/plan_parts.hpp"
+#include "spt/atomic_file.hpp"
 #include "spt_json/json.hpp"
 
 namespace spt::farm {
@@ -34,17 +35,9 @@ std::string slurp(const std::string& p) {
     return s.str();
 }
 
+// Through spt::AtomicFile like every output: whole or absent, never through a symlink.
 Status write_text(const std::string& path, const std::string& text) {
-    const std::string tmp = path + ".partial";
-    {
-        std::ofstream f(tmp, std::ios::trunc | std::ios::binary);
-        f << text;
-        if (!f) return make_error(Code::IoError, tmp + ": cannot write");
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) return make_error(Code::IoError, path + ": cannot rename into place: " + ec.message());
-    return {};
+    return write_file_atomic(path, text.data(), text.size());
 }
 
 // The task wrapper: paints one shot, retrying a failed attempt up to `retries` times; leaves
