@@ -25,8 +25,8 @@ std::atomic<bool> g_signal_stop{false};
 // leaves room for highlights later.
 constexpr double kSequencePeakMin = 16.0;
 // The first signal asks for a clean stop after the current frame; a second one ends the
-// process the default way (the output then only exists as "<out>.partial", never under its
-// final name).
+// process the default way (the output is then an unnamed file that vanishes with it, never
+// anything under its final name: spt/atomic_file.hpp).
 extern "C" void on_stop_signal(int sig) {
     if (g_signal_stop.exchange(true)) {
         std::signal(sig, SIG_DFL);
