@@ -99,6 +99,41 @@ TEST(PaintColorFlags, UnloadableOcioEnvironmentFallsBackWithAWarning) {
     EXPECT_EQ(paint("env -u OCIO ", "flag.spt", "--ocio " + shell_quote(bad)), 2);
 }
 
+// --colorspace and --layer act on 8-bit paintings too (they were ignored when the painting was
+// plain sRGB without alpha), and a missing layer is an error, not a painting of something else.
+TEST(PaintColorFlags, ColourSpaceAndLayerActOnEightBitPaintings) {
+    require_tool();
+    TempDir d;
+    const std::string in = write_ppm(d);
+    auto paint = [&](const std::string& out, std::vector<std::string> extra) {
+        return run_spt(d, paint_cmd(in, d.file(out), std::move(extra)));
+    };
+    ASSERT_EQ(paint("default.spt", {}).code, 0);
+    ASSERT_EQ(paint("srgb.spt", {"--colorspace", "sRGB"}).code, 0);
+    auto r = paint("linear.spt", {"--colorspace", "linear"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    // The file is 8-bit sRGB either way; taking the input as linear light makes it brighter.
+    auto mean = [&](const std::string& f) {
+        auto rd = spt::Reader::open(d.file(f));
+        EXPECT_TRUE(rd.ok());
+        EXPECT_TRUE((*rd)->info().header.plain_color()) << f;
+        spt::Canvas c;
+        EXPECT_TRUE((*rd)->render_frame(0, c).ok());
+        double sum = 0;
+        for (uint8_t v : c.rgb) sum += v;
+        return sum / double(c.rgb.size());
+    };
+    EXPECT_NEAR(mean("srgb.spt"), mean("default.spt"), 1.0);
+    EXPECT_GT(mean("linear.spt"), mean("default.spt") + 20);
+    EXPECT_NE(painter_options(d.file("linear.spt")).find("colorspace=linear"), std::string::npos);
+    // A layer the file does not have.
+    const std::string exr = std::string(SPT_MEDIA_DIR) + "/exr/orbit/orbit.0001.exr";
+    r = run_spt(d, {"paint", exr, "-o", d.file("layer.spt"), "--layer", "Nope", "--max-strokes", "50"});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("no layer 'Nope'"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(d.file("layer.spt")));
+}
+
 TEST(PaintColorFlags, HelpDescribesThem) {
     require_tool();
     TempDir d;

@@ -124,8 +124,12 @@ int paint_still(const PaintCommandOptions& o) {
     auto target = scene_target(o, scene);
     if (!target) return fail(target.error().message);
     if (*target) return paint_scene_still(o, *scene, **target, still_metadata(o));
-    auto img = io::read_image(o.input, ro);
+    // --colorspace / --layer: the colour-managed read, as 8-bit sRGB over the background.
+    Result<io::Image> img = scene ? io::Image{scene->width, scene->height, source_view(*scene, o.background)}
+                                  : io::read_image(o.input, ro);
     if (!img) return fail(img.error().message);
+    if (scene)
+        for (const std::string& w : scene->warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
     const uint32_t W = img->width, H = img->height;
 
     auto still = still_setup(o, W, H);

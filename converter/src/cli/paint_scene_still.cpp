@@ -61,6 +61,9 @@ std::vector<uint8_t> painting_view(const Canvas& c, const Header& h, Rgb8 bg) {
     return out;
 }
 
+
+}  // namespace
+
 std::vector<uint8_t> source_view(const io::SceneImage& img, Rgb8 bg) {
     const size_t n = size_t(img.width) * img.height;
     std::vector<uint8_t> out(n * 3);
@@ -71,8 +74,6 @@ std::vector<uint8_t> source_view(const io::SceneImage& img, Rgb8 bg) {
     return out;
 }
 
-}  // namespace
-
 Result<std::optional<paint::SceneTarget>> scene_target(const PaintCommandOptions& o, std::optional<io::SceneImage>& img) {
     const std::string& ce = o.color_encoding;
     const std::string& al = o.alpha;
@@ -80,8 +81,10 @@ Result<std::optional<paint::SceneTarget>> scene_target(const PaintCommandOptions
         return make_error(Code::InvalidArgument, "--color-encoding: expected auto, srgb8 or linear, got '" + ce + "'");
     if (al != "auto" && al != "on" && al != "off")
         return make_error(Code::InvalidArgument, "--alpha: expected auto, on or off, got '" + al + "'");
-    if (ce == "srgb8" && al == "off") return std::optional<paint::SceneTarget>{};
-    if (ce != "linear" && al != "on") {
+    // --colorspace and --layer need the colour-managed reader, whatever the painting becomes.
+    const bool managed = !o.colorspace.empty() || !o.layer.empty();
+    if (ce == "srgb8" && al == "off" && !managed) return std::optional<paint::SceneTarget>{};
+    if (ce != "linear" && al != "on" && !managed) {
         // Auto: the file's header decides, before any pixel is read, so that a plain painting
         // costs what it did (reading the pixels twice cost ~15% of a 768x512 paint).
         // Unreadable here: the plain path reports the problem exactly as it always did.
@@ -99,15 +102,16 @@ Result<std::optional<paint::SceneTarget>> scene_target(const PaintCommandOptions
     if (!r) {
         // Nothing asked for format 1.3 explicitly: the plain path reports the input's problem
         // exactly as it always did.
-        if (ce == "linear" || al == "on") return r.error();
+        if (ce == "linear" || al == "on" || managed) return r.error();
         return std::optional<paint::SceneTarget>{};
     }
     paint::SceneTarget t;
     t.linear = ce == "linear" || (ce == "auto" && r->is_float);
     t.alpha = al == "on" || (al == "auto" && r->has_alpha &&
                              paint::has_transparency(paint::LinearView{r->width, r->height, r->rgba.data()}));
-    if (!t.linear && !t.alpha) return std::optional<paint::SceneTarget>{};
+    if (!t.linear && !t.alpha && !managed) return std::optional<paint::SceneTarget>{};
     img = std::move(*r);
+    if (!t.linear && !t.alpha) return std::optional<paint::SceneTarget>{};  // 8-bit, from img
     return std::optional<paint::SceneTarget>{t};
 }
 

@@ -19,6 +19,10 @@ namespace spt::cli {
 // `img` receives the scene image when one was read (it is what the painting paints).
 // Fails on an unknown option value or an unreadable input the options require.
 Result<std::optional<paint::SceneTarget>> scene_target(const PaintCommandOptions& o, std::optional<io::SceneImage>& img);
+// (With --colorspace or --layer, `img` is also set when the painting is 8-bit sRGB without
+// alpha: the plain painter then paints source_view(img) instead of reading the file itself.)
+// A scene image as 8-bit sRGB, flattened over `bg` (the plain painter's model).
+std::vector<uint8_t> source_view(const io::SceneImage& img, Rgb8 bg);
 
 // The options spelt for the painter.options metadata of a format 1.3 painting.
 std::string scene_options_text(const paint::SceneTarget& t);
