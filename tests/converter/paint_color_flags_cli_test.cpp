@@ -132,6 +132,12 @@ TEST(PaintColorFlags, ColourSpaceAndLayerActOnEightBitPaintings) {
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("no layer 'Nope'"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(d.file("layer.spt")));
+    // An 8-bit sequence painting cannot apply them yet: refused, not ignored.
+    r = run_spt(d, {"paint", std::string(SPT_MEDIA_DIR) + "/exr/earth/earth.####.exr", "--frames", "1-2", "-o",
+                    d.file("seq.spt"), "--color-encoding", "srgb8", "--colorspace", "sRGB"});
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.err.find("--colorspace and --layer apply to sequences"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(d.file("seq.spt")));
 }
 
 TEST(PaintColorFlags, HelpDescribesThem) {

@@ -110,6 +110,12 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
         // Headroom over the first frame for brighter frames later in the shot.
         if (target.linear) peak = std::max(kSequencePeakMin, 2.0 * paint::proxy_for(lv).peak);
     }
+    // The 8-bit sequence painter reads frames itself (read_image): refuse rather than ignore.
+    if (!scene && (!opts.scene_read.colorspace.empty() || !opts.scene_read.layer.empty()))
+        return make_error(Code::InvalidArgument,
+                          opts.input + ": --colorspace and --layer apply to sequences painted with alpha or in "
+                                       "scene-linear colour; this one paints as 8-bit sRGB (add --color-encoding "
+                                       "linear, or leave out the flag)");
     Result<std::unique_ptr<FrameSource>> src = open_source(opts.input, opts.frames, opts.skip_bad_frames,
                                                            scene ? &opts.scene_read : nullptr);
     if (!src) return src.error();
