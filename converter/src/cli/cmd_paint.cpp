@@ -171,11 +171,7 @@ int paint_still(const PaintCommandOptions& o) {
             if ((*w)->append(f) && (*w)->finish()) p.bytes = (*w)->stats().total_bytes;
             return p;
         };
-        const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes, 0.03, 9, po.lambda);
-        po.lambda = best.lambda;
-        std::fprintf(stderr, "spt paint: --target-bytes %llu: lambda %.4g gives %llu bytes (%+.1f%%), %.2f dB\n",
-                     (unsigned long long)o.target_bytes, best.lambda, (unsigned long long)best.bytes,
-                     100.0 * (double(best.bytes) - double(o.target_bytes)) / double(o.target_bytes), best.psnr);
+        po.lambda = search_target_bytes(o, trial, po.lambda);
     }
 
     Canvas canvas(W, H, o.background);

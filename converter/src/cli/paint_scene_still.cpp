@@ -177,11 +177,7 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
             if (write(trial_file->path(), *sp, tp, bytes, two)) p.bytes = bytes;
             return p;
         };
-        const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes, 0.03, 9, po.lambda);
-        po.lambda = best.lambda;
-        std::fprintf(stderr, "spt paint: --target-bytes %llu: lambda %.4g gives %llu bytes (%+.1f%%), %.2f dB\n",
-                     (unsigned long long)o.target_bytes, best.lambda, (unsigned long long)best.bytes,
-                     100.0 * (double(best.bytes) - double(o.target_bytes)) / double(o.target_bytes), best.psnr);
+        po.lambda = search_target_bytes(o, trial, po.lambda);
     }
 
     PaintProgress progress(o.progress, po.max_strokes, po.target_psnr, int(setup.header.sets.size()));

@@ -1,6 +1,7 @@
 #include "cli/still_setup.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace spt::cli {
@@ -30,6 +31,15 @@ Result<StillSetup> still_setup(const PaintCommandOptions& o, uint32_t W, uint32_
         s.rois.push_back(roi);
     }
     return s;
+}
+
+double search_target_bytes(const PaintCommandOptions& o, const std::function<paint::RatePoint(double)>& trial,
+                           double lambda) {
+    const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes, 0.03, 9, lambda);
+    std::fprintf(stderr, "spt paint: --target-bytes %llu: lambda %.4g gives %llu bytes (%+.1f%%), %.2f dB\n",
+                 (unsigned long long)o.target_bytes, best.lambda, (unsigned long long)best.bytes,
+                 100.0 * (double(best.bytes) - double(o.target_bytes)) / double(o.target_bytes), best.psnr);
+    return best.lambda;
 }
 
 }  // namespace spt::cli

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "cli/paint_options.hpp"
 #include "paint/painter.hpp"
+#include "paint/rate_control.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
 
@@ -22,5 +24,10 @@ struct StillSetup {
 
 // Fails, with a message, when the templates cannot be loaded or a ROI lies outside the image.
 Result<StillSetup> still_setup(const PaintCommandOptions& o, uint32_t width, uint32_t height);
+
+// --target-bytes: the lambda whose painting (`trial`, one paint and code per call) comes
+// closest to o.target_bytes, searched from `lambda` and reported on stderr.
+double search_target_bytes(const PaintCommandOptions& o, const std::function<paint::RatePoint(double)>& trial,
+                           double lambda);
 
 }  // namespace spt::cli
