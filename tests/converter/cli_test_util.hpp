@@ -33,12 +33,7 @@ inline std::string shell_quote(const std::string& s) {
     return q + "'";
 }
 
-inline std::string slurp(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
+using spt::testing::slurp;
 
 // Runs SPT_TOOL with `args`; stdout and stderr are captured through files in `dir`.
 inline RunResult run_spt(const TempDir& dir, const std::vector<std::string>& args) {
