@@ -62,10 +62,8 @@ TEST(CliSyntax, PaintTakesTheEqualsFormToo) {
                          "--max-strokes", "300", "--seed", "7", "--progress", "none", "--threads", "2"});
     ASSERT_EQ(b.code, 0) << b.err;
     EXPECT_EQ(slurp(d.file("a.spt")), slurp(d.file("b.spt")));
-    auto bad = run_spt(d, {"paint", d.file("in.ppm"), "--output=" + d.file("c.spt"), "--sets=2"});
-    EXPECT_EQ(bad.code, 2);
-    EXPECT_NE(bad.err.find("--sets"), std::string::npos) << bad.err;
-    EXPECT_FALSE(fs::exists(d.file("c.spt")));
+    EXPECT_TRUE(refused(d, {"paint", d.file("in.ppm"), "--output=" + d.file("c.spt"), "--sets=2"}, 2, {"--sets"},
+                        d.file("c.spt")));
 }
 
 TEST(CliSyntax, HelpIsGeneratedFromTheOptionDeclarations) {

@@ -49,6 +49,20 @@ inline RunResult run_spt(const TempDir& dir, const std::vector<std::string>& arg
     return r;
 }
 
+// A command the tool must refuse: exit `code` (any failure for kAnyFailure), each of `words`
+// in its stderr, and no `out` left behind.
+constexpr int kAnyFailure = -1;
+inline ::testing::AssertionResult refused(const TempDir& dir, const std::vector<std::string>& args, int code,
+                                          const std::vector<std::string>& words, const std::string& out) {
+    const RunResult r = run_spt(dir, args);
+    if (code == kAnyFailure ? r.code == 0 : r.code != code)
+        return ::testing::AssertionFailure() << "exit " << r.code << ", want " << code << ": " << r.err;
+    for (const auto& w : words)
+        if (r.err.find(w) == std::string::npos) return ::testing::AssertionFailure() << "no '" << w << "' in: " << r.err;
+    if (fs::exists(out)) return ::testing::AssertionFailure() << out << " was left behind";
+    return ::testing::AssertionSuccess();
+}
+
 // A small stream: 64x48 canvas, two sets, three templates, `frames` frames with a key frame
 // every `key_every`, random stamp/affine/curve strokes, removals and a motion field.
 inline spt::StreamInfo test_info() {
