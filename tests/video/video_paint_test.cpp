@@ -24,6 +24,12 @@ VideoPaintOptions options(const std::string& in, const std::string& out) {
     return o;
 }
 
+// video_paint with a silent progress line.
+Status paint_quietly(const VideoPaintOptions& o, VideoPaintReport* rep = nullptr) {
+    io::Progress progress(io::ProgressMode::None, "paint", 0);
+    return video_paint(o, progress, rep);
+}
+
 // Writes frames first..last of a moving scene as dir/seq.####.png, leaving out `missing`.
 void write_sequence(const std::filesystem::path& dir, int first, int last, int missing = -1) {
     const uint32_t w = 64, h = 48;
@@ -43,9 +49,8 @@ TEST(VideoPaint, PaintsAPngSequence) {
     write_sequence(dir, 1, 8);
     auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
     o.fps = "30000/1001";
-    io::Progress progress(io::ProgressMode::None, "paint", 0);
     VideoPaintReport rep;
-    Status st = video_paint(o, progress, &rep);
+    Status st = paint_quietly(o, &rep);
     ASSERT_TRUE(st.ok()) << st.error().message;
     EXPECT_EQ(rep.frames, 8u);
     auto r = Reader::open(o.output);
@@ -60,8 +65,7 @@ TEST(VideoPaint, MissingFrameIsAnErrorNamingIt) {
     const auto dir = spt_test::temp_dir("missing");
     write_sequence(dir, 1, 6, 4);
     auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
-    io::Progress progress(io::ProgressMode::None, "paint", 0);
-    Status st = video_paint(o, progress);
+    Status st = paint_quietly(o);
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().message.find("seq.0004.png"), std::string::npos) << st.error().message;
     EXPECT_FALSE(std::filesystem::exists(o.output)) << "no output after a failure";
@@ -70,7 +74,7 @@ TEST(VideoPaint, MissingFrameIsAnErrorNamingIt) {
     // --skip-bad-frames: frame 4 repeats frame 3, and the encode goes on.
     o.skip_bad_frames = true;
     VideoPaintReport rep;
-    st = video_paint(o, progress, &rep);
+    st = paint_quietly(o, &rep);
     ASSERT_TRUE(st.ok()) << st.error().message;
     EXPECT_EQ(rep.frames, 6u);
     EXPECT_EQ(rep.skipped_frames, 1u);
@@ -82,13 +86,12 @@ TEST(VideoPaint, UnreadableFrameIsSkippedWhenAsked) {
     write_sequence(dir, 1, 5);
     std::ofstream(dir / "seq.0003.png") << "not a png";
     auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
-    io::Progress progress(io::ProgressMode::None, "paint", 0);
-    Status st = video_paint(o, progress);
+    Status st = paint_quietly(o);
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().message.find("seq.0003.png"), std::string::npos) << st.error().message;
     o.skip_bad_frames = true;
     VideoPaintReport rep;
-    ASSERT_TRUE(video_paint(o, progress, &rep).ok());
+    ASSERT_TRUE(paint_quietly(o, &rep).ok());
     EXPECT_EQ(rep.skipped_frames, 1u);
     std::filesystem::remove_all(dir);
 }
@@ -102,9 +105,8 @@ TEST(VideoPaint, StopFlagLeavesAValidFileWithTheFinishedFrames) {
     o.on_frame = [&](uint64_t done) {
         if (done == 5) stop = true;
     };
-    io::Progress progress(io::ProgressMode::None, "paint", 0);
     VideoPaintReport rep;
-    Status st = video_paint(o, progress, &rep);
+    Status st = paint_quietly(o, &rep);
     EXPECT_FALSE(st.ok()) << "an interrupted encode reports it";
     EXPECT_TRUE(rep.interrupted);
     EXPECT_FALSE(std::filesystem::exists(o.output + ".partial"));
@@ -122,8 +124,7 @@ TEST(VideoPaint, RoiFileBecomesRoiRecords) {
     std::ofstream(dir / "rois.json") << R"({"rois":[{"frames":"12-14","x":8,"y":8,"w":20,"h":16}]})";
     auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
     o.roi_file = (dir / "rois.json").string();
-    io::Progress progress(io::ProgressMode::None, "paint", 0);
-    ASSERT_TRUE(video_paint(o, progress).ok());
+    ASSERT_TRUE(paint_quietly(o).ok());
     auto r = Reader::open(o.output);
     ASSERT_TRUE(r.ok());
     ASSERT_EQ((*r)->info().rois.size(), 1u);
@@ -141,9 +142,8 @@ TEST(VideoPaint, ReadsAVideoFileWithItsFrameRate) {
     auto o = options(clip, (dir / "b.spt").string());
     o.frames = "0-3";
     o.paint.max_strokes = 200;
-    io::Progress progress(io::ProgressMode::None, "paint", 0);
     VideoPaintReport rep;
-    Status st = video_paint(o, progress, &rep);
+    Status st = paint_quietly(o, &rep);
     ASSERT_TRUE(st.ok()) << st.error().message;
     EXPECT_EQ(rep.frames, 4u);
     auto r = Reader::open(o.output);
