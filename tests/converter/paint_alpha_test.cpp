@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "paint/painter.hpp"
+#include "paint_test_util.hpp"
 #include "spt/render.hpp"
 
 using namespace spt;
@@ -39,37 +40,25 @@ RgbaModel disc_model(uint32_t w, uint32_t h) {
     return m;
 }
 
-struct AlphaPainting {
-    PaintSetup setup;
-    std::unique_ptr<Renderer> renderer;
-    Canvas canvas;
-    std::vector<Stroke> strokes;
-    PaintStats stats;
-};
+using paint_test::Painting;
 
-AlphaPainting run(const RgbaModel& m, int threads) {
-    AlphaPainting p;
-    p.setup = make_setup(m.width, m.height, Rgb8{255, 255, 255}, default_sets(m.width, m.height, 5), default_templates());
-    p.setup.header.alpha = true;
-    auto r = Renderer::create(p.setup.header, p.setup.templates);
-    EXPECT_TRUE(r.ok()) << r.error().message;
-    if (!r) return p;
-    p.renderer = std::move(r.value());
-    p.canvas = Canvas(p.setup.header);
+Painting run(const RgbaModel& m, int threads) {
+    PaintSetup setup =
+        make_setup(m.width, m.height, Rgb8{255, 255, 255}, default_sets(m.width, m.height, 5), default_templates());
+    setup.header.alpha = true;
     PaintOptions o;
     o.seed = 7;
     o.threads = threads;
     o.max_strokes = 3000;
     o.lambda = 2;
-    p.stats = paint::paint(m.view(), p.canvas, *p.renderer, p.setup, o, p.strokes);
-    return p;
+    return paint_test::paint_model(m.view(), std::move(setup), o);
 }
 
 }  // namespace
 
 TEST(PaintAlpha, CanvasEqualsTheRendererBitForBitAlphaIncluded) {
     const RgbaModel m = disc_model(96, 64);
-    AlphaPainting p = run(m, 2);
+    Painting p = run(m, 2);
     ASSERT_GT(p.strokes.size(), 50u);
     ASSERT_EQ(p.canvas.alpha.size(), size_t(96) * 64);
     Canvas rendered(p.setup.header);
@@ -81,7 +70,7 @@ TEST(PaintAlpha, CanvasEqualsTheRendererBitForBitAlphaIncluded) {
 
 TEST(PaintAlpha, TransparentStaysTransparentAndOpaqueGetsCovered) {
     const RgbaModel m = disc_model(96, 64);
-    AlphaPainting p = run(m, 2);
+    Painting p = run(m, 2);
     size_t out_n = 0, out_clear = 0, in_n = 0, in_opaque = 0;
     for (size_t i = 0; i < m.alpha.size(); ++i) {
         if (m.alpha[i] == 0) { ++out_n; out_clear += p.canvas.alpha[i] < 32; }
@@ -95,7 +84,7 @@ TEST(PaintAlpha, TransparentStaysTransparentAndOpaqueGetsCovered) {
 
 TEST(PaintAlpha, SameStrokesForAnyThreadCount) {
     const RgbaModel m = disc_model(96, 64);
-    AlphaPainting a = run(m, 1), b = run(m, 3);
+    Painting a = run(m, 1), b = run(m, 3);
     ASSERT_FALSE(a.strokes.empty());
     EXPECT_EQ(a.strokes, b.strokes);
     EXPECT_EQ(a.canvas.alpha, b.canvas.alpha);

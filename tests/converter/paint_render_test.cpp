@@ -17,28 +17,14 @@
 using namespace spt;
 using namespace spt::paint;
 using spt::paint_test::Model;
+using spt::paint_test::Painting;
 
 namespace {
 
-struct Painting {
-    PaintSetup setup;
-    std::unique_ptr<Renderer> renderer;
-    Canvas canvas;
-    std::vector<Stroke> strokes;
-    PaintStats stats;
-};
-
 Painting run(const Model& m, PaintOptions opts, std::vector<StrokeSet> sets = {}) {
-    Painting p;
     if (sets.empty()) sets = default_sets(m.width, m.height, 5);
-    p.setup = make_setup(m.width, m.height, Rgb8{255, 255, 255}, sets, default_templates());
-    auto r = Renderer::create(p.setup.header, p.setup.templates);
-    EXPECT_TRUE(r.ok()) << r.error().message;
-    if (!r) return p;
-    p.renderer = std::move(r.value());
-    p.canvas = Canvas(m.width, m.height, p.setup.header.background);
-    p.stats = paint::paint(m.view(), p.canvas, *p.renderer, p.setup, opts, p.strokes);
-    return p;
+    return paint_test::paint_model(m.view(), make_setup(m.width, m.height, Rgb8{255, 255, 255}, sets, default_templates()),
+                                   opts);
 }
 
 PaintOptions base_opts() {

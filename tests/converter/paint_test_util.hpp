@@ -2,13 +2,17 @@
 // when the media folder is absent).
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "io/image_io.hpp"
 #include "paint/painter.hpp"
+#include "spt/render.hpp"
 
 namespace spt::paint_test {
 
@@ -67,6 +71,27 @@ inline Model synthetic(uint32_t w, uint32_t h) {
 inline Model model_or_synthetic(uint32_t w, uint32_t h) {
     Model m = load_small("stills/coffee.png", w, h);
     return m.width ? m : synthetic(w, h);
+}
+
+// A painting of a model on `setup` with `opts`, and the renderer that drew it.
+struct Painting {
+    paint::PaintSetup setup;
+    std::unique_ptr<Renderer> renderer;
+    Canvas canvas;
+    std::vector<Stroke> strokes;
+    paint::PaintStats stats;
+};
+
+inline Painting paint_model(const paint::ImageView& model, paint::PaintSetup setup, const paint::PaintOptions& opts) {
+    Painting p;
+    p.setup = std::move(setup);
+    auto r = Renderer::create(p.setup.header, p.setup.templates);
+    EXPECT_TRUE(r.ok()) << r.error().message;
+    if (!r) return p;
+    p.renderer = std::move(r.value());
+    p.canvas = Canvas(p.setup.header);
+    p.stats = paint::paint(model, p.canvas, *p.renderer, p.setup, opts, p.strokes);
+    return p;
 }
 
 }  // namespace spt::paint_test
