@@ -93,6 +93,20 @@ inline Stroke random_stroke(std::mt19937_64& rng, const StreamInfo& info, bool p
     return Stroke::make_curve(std::move(c));
 }
 
+// One key frame of `strokes` on a w x h canvas with one 4x4 stroke set, `orientations`
+// orientations and no templates: the smallest stream that shows one rule.
+inline RandomStream one_frame_stream(uint32_t w, uint32_t h, std::vector<Stroke> strokes, uint32_t orientations = 1) {
+    RandomStream rs;
+    rs.info.header.width = w;
+    rs.info.header.height = h;
+    rs.info.header.sets = {{4, 4}};
+    rs.info.header.orientations = default_orientations(orientations);
+    Frame k;
+    k.added = std::move(strokes);
+    rs.frames = {k};
+    return rs;
+}
+
 inline RandomStream make_random_stream(uint64_t seed, const StreamShapeOptions& o = {}) {
     std::mt19937_64 rng(seed);
     auto uni = [&](int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng); };

@@ -106,18 +106,13 @@ TEST(CodingRoundTrip, PolygonStreams) {
 // A stream that gets its first polygon after range-coded frames without curves is raised to 1.2
 // in place; one that range-coded a curve first is refused, with a message saying why.
 TEST(CodingRoundTrip, WriterRaisesVersionForPolygons) {
-    RandomStream rs;
-    rs.info.header.width = 20; rs.info.header.height = 10;
-    rs.info.header.sets = {{4, 4}};
-    rs.info.header.orientations = default_orientations(2);
-    Frame k;
     AffineStroke a; a.a = a.d = 16; a.tx = a.ty = 40;
+    RandomStream rs = one_frame_stream(20, 10, {Stroke::make_affine(a)}, 2);
     rs.info.templates = {Template{TemplateKind::Ellipse, 0, 0, {}, "e", 0}};
-    k.added = {Stroke::make_affine(a)};
     Frame i; i.index = 1; i.type = FrameType::Inter;
     PolygonStroke p; p.points = {{0, 0}, {160, 8}, {40, 150}};
     i.added = {Stroke::make_polygon(p)};
-    rs.frames = {k, i};
+    rs.frames.push_back(i);
     const std::string path = temp_path("poly-version.spt");
     ASSERT_TRUE(write_stream(path, rs, Coding::Range).ok());
     auto r = Reader::open(path);
@@ -205,14 +200,10 @@ PolygonStroke affine_ngon(double cx, double cy, double rx, double ry, double deg
 }
 
 RandomStream polygon_stream(std::vector<PolygonStroke> polys, uint32_t w = 200, uint32_t h = 150) {
-    RandomStream rs;
-    rs.info.header.width = w; rs.info.header.height = h;
-    rs.info.header.sets = {{4, 4}};
-    rs.info.header.orientations = default_orientations(1);
+    std::vector<Stroke> strokes;
+    for (auto& p : polys) strokes.push_back(Stroke::make_polygon(std::move(p)));
+    RandomStream rs = one_frame_stream(w, h, std::move(strokes));
     rs.info.header.version_minor = 2;
-    Frame k;
-    for (auto& p : polys) k.added.push_back(Stroke::make_polygon(std::move(p)));
-    rs.frames = {k};
     return rs;
 }
 

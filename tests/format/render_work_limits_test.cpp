@@ -11,6 +11,36 @@
 using namespace spt;
 using namespace spt::testing;
 
+namespace {
+
+// Frame 0's live list of `path`, read under `limits`: whether it fits. A refusal must be a
+// LimitExceeded that speaks of rendering work.
+bool live_list_fits(const std::string& path, const Limits& limits) {
+    ReaderOptions ro;
+    ro.limits = limits;
+    auto r = Reader::open(path, ro);
+    EXPECT_TRUE(r.ok()) << r.error().message;
+    if (!r.ok()) return false;
+    auto live = (*r)->strokes_at(0);
+    if (!live.ok()) {
+        EXPECT_EQ(live.error().code, Code::LimitExceeded);
+        EXPECT_NE(live.error().message.find("rendering work"), std::string::npos) << live.error().message;
+    }
+    return live.ok();
+}
+
+// Frame 0 of `path`, read under `limits` (the file itself opens).
+Result<Frame> read_frame0(const std::string& path, const Limits& limits) {
+    ReaderOptions ro;
+    ro.limits = limits;
+    auto r = Reader::open(path, ro);
+    EXPECT_TRUE(r.ok()) << r.error().message;
+    if (!r.ok()) return r.error();
+    return (*r)->read_frame(0);
+}
+
+}  // namespace
+
 // Stamps and affine strokes: box pixels x template samples per pixel (SPEC 10).
 TEST(RenderWorkLimits, FillRenderingWorkIsBounded) {
     StreamInfo info;
@@ -40,16 +70,9 @@ TEST(RenderWorkLimits, FillRenderingWorkIsBounded) {
     const std::string path = temp_path("fill-work.spt");
     ASSERT_TRUE(write_stream(path, rs, Coding::Range).ok());
     for (uint64_t limit : {uint64_t(64 * 48 * 10 - 1), uint64_t(64 * 48 * 10)}) {
-        ReaderOptions ro;
-        ro.limits.max_fill_work = limit;
-        auto r = Reader::open(path, ro);
-        ASSERT_TRUE(r.ok());
-        auto live = (*r)->strokes_at(0);
-        EXPECT_EQ(live.ok(), limit == 64 * 48 * 10) << limit;
-        if (!live.ok()) {
-            EXPECT_EQ(live.error().code, Code::LimitExceeded);
-            EXPECT_NE(live.error().message.find("rendering work"), std::string::npos) << live.error().message;
-        }
+        Limits limits;
+        limits.max_fill_work = limit;
+        EXPECT_EQ(live_list_fits(path, limits), limit == 64 * 48 * 10) << limit;
     }
     std::remove(path.c_str());
 }
@@ -67,27 +90,14 @@ TEST(RenderWorkLimits, CurveRenderingWorkIsBounded) {
     dot.points.resize(1);  // a one-point curve is one disc: columns 1..3, rows 2..4
     EXPECT_EQ(curve_render_work(dot, 64, 64), 9u);
 
-    RandomStream rs;
-    rs.info.header.width = 64; rs.info.header.height = 64;
-    rs.info.header.sets = {{4, 4}};
-    rs.info.header.orientations = default_orientations(1);
-    Frame k;
-    k.added = {Stroke::make_curve(c), Stroke::make_curve(c)};
-    rs.frames = {k};
+    const RandomStream rs = one_frame_stream(64, 64, {Stroke::make_curve(c), Stroke::make_curve(c)});
     for (Coding coding : {Coding::Stored, Coding::Range}) {
         const std::string path = temp_path("curve-work-" + std::to_string(int(coding)) + ".spt");
         ASSERT_TRUE(write_stream(path, rs, coding).ok());
         for (uint64_t limit : {uint64_t(29), uint64_t(59), uint64_t(60)}) {
-            ReaderOptions ro;
-            ro.limits.max_curve_work = limit;
-            auto r = Reader::open(path, ro);
-            ASSERT_TRUE(r.ok());
-            auto live = (*r)->strokes_at(0);
-            EXPECT_EQ(live.ok(), limit == 60) << limit;  // each curve 30, the live list 60
-            if (!live.ok()) {
-                EXPECT_EQ(live.error().code, Code::LimitExceeded);
-                EXPECT_NE(live.error().message.find("rendering work"), std::string::npos) << live.error().message;
-            }
+            Limits limits;
+            limits.max_curve_work = limit;
+            EXPECT_EQ(live_list_fits(path, limits), limit == 60) << limit;  // each curve 30, the live list 60
         }
         std::remove(path.c_str());
     }
@@ -97,30 +107,9 @@ TEST(RenderWorkLimits, CurveRenderingWorkIsBounded) {
 // before anything is allocated or drawn, with errors that name the frame and the byte offset;
 // the polygon rendering work is bounded per stroke and over the live list.
 TEST(RenderWorkLimits, PolygonLimitsAndRanges) {
-    RandomStream rs;
-    rs.info.header.width = 16; rs.info.header.height = 16;
-    rs.info.header.sets = {{4, 4}};
-    rs.info.header.orientations = default_orientations(1);
     PolygonStroke p;
     for (int i = 0; i < 10; ++i) p.points.push_back({16 * i, 16 * ((i * 7) % 10)});
-    Frame k;
-    k.added = {Stroke::make_polygon(p)};
-    rs.frames = {k};
-    for (Coding coding : {Coding::Stored, Coding::Range}) {
-        const std::string path = temp_path("poly-limits-" + std::to_string(int(coding)) + ".spt");
-        ASSERT_TRUE(write_stream(path, rs, coding).ok());
-        ReaderOptions ro;
-        ro.limits.max_polygon_vertices = 9;
-        auto r = Reader::open(path, ro);
-        ASSERT_TRUE(r.ok()) << r.error().message;
-        auto f = (*r)->read_frame(0);
-        ASSERT_FALSE(f.ok());
-        EXPECT_EQ(f.error().code, coding == Coding::Stored ? Code::LimitExceeded : Code::Corrupt);
-        EXPECT_NE(f.error().message.find("frame 0"), std::string::npos) << f.error().message;
-        EXPECT_NE(f.error().message.find("byte offset"), std::string::npos) << f.error().message;
-        EXPECT_NE(f.error().message.find("10 vertices"), std::string::npos) << f.error().message;
-        std::remove(path.c_str());
-    }
+    const RandomStream rs = one_frame_stream(16, 16, {Stroke::make_polygon(p)});
     // Rendering work (SPEC 10): 10 non-horizontal edges x 10 rows x 1 sample = 100 units here.
     EXPECT_EQ(polygon_render_work(p, 16), 100u);
     PolygonStroke aa = p;
@@ -128,21 +117,25 @@ TEST(RenderWorkLimits, PolygonLimitsAndRanges) {
     EXPECT_EQ(polygon_render_work(aa, 16), 100u * 16);
     EXPECT_EQ(polygon_render_work(p, 5), 10u * 5);  // rows clipped to the canvas
     for (Coding coding : {Coding::Stored, Coding::Range}) {
-        const std::string path = temp_path("poly-work-" + std::to_string(int(coding)) + ".spt");
+        const std::string path = temp_path("poly-limits-" + std::to_string(int(coding)) + ".spt");
         ASSERT_TRUE(write_stream(path, rs, coding).ok());
-        ReaderOptions ro;
-        ro.limits.max_polygon_work = 99;
-        auto r = Reader::open(path, ro);
-        ASSERT_TRUE(r.ok()) << r.error().message;
-        auto f = (*r)->read_frame(0);
+        Limits vertices;
+        vertices.max_polygon_vertices = 9;
+        auto f = read_frame0(path, vertices);
+        ASSERT_FALSE(f.ok());
+        EXPECT_EQ(f.error().code, coding == Coding::Stored ? Code::LimitExceeded : Code::Corrupt);
+        EXPECT_NE(f.error().message.find("frame 0"), std::string::npos) << f.error().message;
+        EXPECT_NE(f.error().message.find("byte offset"), std::string::npos) << f.error().message;
+        EXPECT_NE(f.error().message.find("10 vertices"), std::string::npos) << f.error().message;
+        Limits work;
+        work.max_polygon_work = 99;
+        f = read_frame0(path, work);
         ASSERT_FALSE(f.ok());
         EXPECT_EQ(f.error().code, Code::LimitExceeded);
         EXPECT_NE(f.error().message.find("rendering work"), std::string::npos) << f.error().message;
         EXPECT_NE(f.error().message.find("frame 0"), std::string::npos) << f.error().message;
-        ro.limits.max_polygon_work = 100;
-        auto ok = Reader::open(path, ro);
-        ASSERT_TRUE(ok.ok());
-        EXPECT_TRUE((*ok)->strokes_at(0).ok());
+        work.max_polygon_work = 100;
+        EXPECT_TRUE(live_list_fits(path, work));
         std::remove(path.c_str());
     }
     // The live list's sum is bounded too: two frames of one polygon each, 100 units apiece.
