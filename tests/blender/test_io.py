@@ -5,11 +5,11 @@ import os
 import random
 import struct
 import sys
-import tempfile
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import spt_samples  # noqa: E402  (puts blender_addon on sys.path)
+from chunk_util import Tmp, damaged, fix_chunk_crc, read_all  # noqa: E402
 
 import numpy as np  # noqa: E402
 from reference import ref_geometry as geometry  # noqa: E402
@@ -24,24 +24,8 @@ from spt_grease_pencil.io.writer import write_stored  # noqa: E402
 from spt_grease_pencil.io.model import Limits  # noqa: E402
 
 
-def read_all(p):
-    with open(p, "rb") as f:
-        return f.read()
-
-
 def f32(x):
     return struct.unpack("<f", struct.pack("<f", x))[0]
-
-
-class Tmp(unittest.TestCase):
-    def setUp(self):
-        self.dir = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.dir.cleanup()
-
-    def path(self, name):
-        return os.path.join(self.dir.name, name)
 
 
 class RoundTrip(Tmp):
@@ -242,29 +226,16 @@ class BadFiles(Tmp):
     def test_range_coded_frame_asks_for_pack(self):
         d = bytearray(self.data)
         # Find the first FRAM chunk, set its coding to 1 and fix the CRC.
-        import zlib
         i = d.find(b"FRAM") - 4
-        length = struct.unpack_from("<I", d, i)[0]
         d[i + 8 + 5] = 1
-        struct.pack_into("<I", d, i + 8 + length, zlib.crc32(bytes(d[i + 4:i + 8 + length])) & 0xFFFFFFFF)
+        fix_chunk_crc(d, i)
         with self.assertRaises(NeedsPack):
             read_bytes(bytes(d), "x.spt")
 
     def test_random_corruption_never_crashes(self):
-        import zlib
         rng = random.Random(5)
         for _ in range(300):
-            d = bytearray(self.data)
-            for _k in range(rng.randrange(1, 4)):
-                d[rng.randrange(8, len(d))] = rng.randrange(256)
-            # Also fix CRCs so the payload parsers see the damage.
-            pos = 8
-            while pos + 12 <= len(d):
-                ln = struct.unpack_from("<I", d, pos)[0]
-                if pos + 12 + ln > len(d):
-                    break
-                struct.pack_into("<I", d, pos + 8 + ln, zlib.crc32(bytes(d[pos + 4:pos + 8 + ln])) & 0xFFFFFFFF)
-                pos += 12 + ln
+            d = damaged(self.data, rng)  # CRCs fixed, so the payload parsers see the damage
             try:
                 f = read_bytes(bytes(d), "x.spt")
                 for _l in f.live_lists():
@@ -416,20 +387,10 @@ class Columnar(Tmp):
         self.assertEqual(list(read_file(p).live_lists()), lists)
 
     def test_corruption_gives_the_same_verdict(self):
-        import zlib
         data = read_all(self.sample(frames=3, polygons=3))
         rng = random.Random(11)
         for _ in range(200):
-            d = bytearray(data)
-            for _k in range(rng.randrange(1, 4)):
-                d[rng.randrange(8, len(d))] = rng.randrange(256)
-            pos = 8
-            while pos + 12 <= len(d):
-                ln = struct.unpack_from("<I", d, pos)[0]
-                if pos + 12 + ln > len(d):
-                    break
-                struct.pack_into("<I", d, pos + 8 + ln, zlib.crc32(bytes(d[pos + 4:pos + 8 + ln])) & 0xFFFFFFFF)
-                pos += 12 + ln
+            d = damaged(data, rng)
             outcome = []
             for read in (ref_reader.read_bytes, lambda b, n: read_bytes(b, n, columnar=True)):
                 try:

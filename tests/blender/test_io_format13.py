@@ -9,10 +9,10 @@ import struct
 import sys
 import tempfile
 import unittest
-import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import spt_samples  # noqa: E402  (puts blender_addon on sys.path)
+from chunk_util import Tmp, fix_chunk_crc, read_all  # noqa: E402
 
 import numpy as np  # noqa: E402
 from reference import ref_reader, ref_writer  # noqa: E402
@@ -30,14 +30,8 @@ def golden(name):
     return os.path.join(GOLDEN, name + ".stored.spt")
 
 
-def read_all(p):
-    with open(p, "rb") as f:
-        return f.read()
-
-
 def fix_head_crc(d: bytearray) -> bytearray:
-    n = struct.unpack_from("<I", d, 8)[0]
-    struct.pack_into("<I", d, 16 + n, zlib.crc32(bytes(d[12:16 + n])) & 0xFFFFFFFF)
+    fix_chunk_crc(d, 8)
     return d
 
 
@@ -52,17 +46,6 @@ def q24_to_half(v: int) -> int:
     if q == 2048:
         q, s = 1024, s + 1
     return min(((s + 1) << 10) | (q - 1024), 0x7BFF)
-
-
-class Tmp(unittest.TestCase):
-    def setUp(self):
-        self.dir = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.dir.cleanup()
-
-    def path(self, name):
-        return os.path.join(self.dir.name, name)
 
 
 class GoldenFiles(Tmp):
@@ -210,10 +193,9 @@ class BadHeaders(unittest.TestCase):
             write_stored(p, inf, frames)
             data = bytearray(read_all(p))
         t = data.find(b"FRAM")              # frame 0's type; its payload follows
-        n = struct.unpack_from("<I", data, t - 4)[0]
         i = t + 4 + 8 + 4                   # its first record: the stamp
         data[i + 12] = 0x7C                 # the stamp's R high byte: code 0x7C00, infinity
-        struct.pack_into("<I", data, t + 4 + n, zlib.crc32(bytes(data[t:t + 4 + n])) & 0xFFFFFFFF)
+        fix_chunk_crc(data, t - 4)
         for read in (lambda b: read_bytes(b, "x.spt", columnar=True), lambda b: ref_reader.read_bytes(b, "x.spt")):
             with self.assertRaisesRegex(SptError, r"x\.spt: byte \d+: colour code"):
                 list(read(bytes(data)).live_lists())
