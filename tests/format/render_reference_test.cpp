@@ -200,6 +200,26 @@ std::vector<spt::Template> test_templates(std::mt19937& rng) {
     return t;
 }
 
+// `rounds` rounds of `count` random strokes from the background: each stroke drawn alone by the
+// fast renderer equals the reference's draw (the first that disagrees is named), and each round's
+// render equals the reference's canvas. Adds the strokes checked to `strokes`.
+void expect_rounds_equal_reference(std::mt19937& rng, const spt::Renderer& r, const Ref& ref, int rounds, int count,
+                                   int& strokes) {
+    for (int round = 0; round < rounds; ++round) {
+        const auto v = random_strokes(rng, ref.h, ref.t.size(), count);
+        spt::Canvas fast, slow(ref.h.width, ref.h.height, ref.h.background);
+        ASSERT_TRUE(r.render(fast, v).ok());
+        for (size_t i = 0; i < v.size(); ++i) {
+            spt::Canvas one = slow;
+            ref.draw(slow, v[i]);
+            ASSERT_TRUE(r.draw(one, v[i]).ok());
+            ASSERT_EQ(one.rgb, slow.rgb) << "round " << round << " stroke " << i << " kind " << int(v[i].kind);
+        }
+        ASSERT_EQ(fast.rgb, slow.rgb);
+        strokes += int(v.size());
+    }
+}
+
 TEST(RenderReference, FastRendererEqualsIndependentReference) {
     std::mt19937 rng(20240607);
     const auto templates = test_templates(rng);
@@ -211,21 +231,7 @@ TEST(RenderReference, FastRendererEqualsIndependentReference) {
     auto r = make_renderer(hd, templates);
     const Ref ref{hd, templates};
     int strokes = 0;
-    for (int round = 0; round < 12; ++round) {
-        const auto v = random_strokes(rng, hd, templates.size(), 300);
-        spt::Canvas fast, slow(hd.width, hd.height, hd.background);
-        ASSERT_TRUE(r->render(fast, v).ok());
-        for (size_t i = 0; i < v.size(); ++i) {
-            spt::Canvas before = slow;
-            ref.draw(slow, v[i]);
-            // Per-stroke check pinpoints the first disagreeing stroke.
-            spt::Canvas one = before;
-            ASSERT_TRUE(r->draw(one, v[i]).ok());
-            ASSERT_EQ(one.rgb, slow.rgb) << "round " << round << " stroke " << i << " kind " << int(v[i].kind);
-        }
-        ASSERT_EQ(fast.rgb, slow.rgb);
-        strokes += int(v.size());
-    }
+    expect_rounds_equal_reference(rng, *r, ref, 12, 300, strokes);
     EXPECT_EQ(strokes, 3600);
 }
 
@@ -324,18 +330,9 @@ TEST(RenderReference, SupersampledTemplatesEqualReference) {
     auto hd = make_header(40, 30, {{24, 11}, {5, 5}, {1, 2}}, 8);
     auto r = make_renderer(hd, templates);
     const Ref ref{hd, templates};
-    for (int round = 0; round < 4; ++round) {
-        const auto v = random_strokes(rng, hd, templates.size(), 150);
-        spt::Canvas fast, slow(hd.width, hd.height, hd.background);
-        ASSERT_TRUE(r->render(fast, v).ok());
-        for (size_t i = 0; i < v.size(); ++i) {
-            spt::Canvas one = slow;
-            ref.draw(slow, v[i]);
-            ASSERT_TRUE(r->draw(one, v[i]).ok());
-            ASSERT_EQ(one.rgb, slow.rgb) << "round " << round << " stroke " << i << " kind " << int(v[i].kind);
-        }
-        ASSERT_EQ(fast.rgb, slow.rgb);
-    }
+    int strokes = 0;
+    expect_rounds_equal_reference(rng, *r, ref, 4, 150, strokes);
+    if (::testing::Test::HasFatalFailure()) return;
     // An axis-aligned half-pixel edge gives exactly half coverage.
     spt::AffineStroke a;
     a.tmpl = 1; a.tx = 16 * 10; a.ty = 16 * 10 + 8; a.a = 16 * 4; a.d = 16 * 4; a.color = {255, 255, 255, 255};
