@@ -49,16 +49,21 @@ inline RunResult run_spt(const TempDir& dir, const std::vector<std::string>& arg
     return r;
 }
 
-// A command the tool must refuse: exit `code` (any failure for kAnyFailure), each of `words`
-// in its stderr, and no `out` left behind.
+// A run that failed as it should: exit `code` (any failure for kAnyFailure) and each of `words`
+// in its stderr.
 constexpr int kAnyFailure = -1;
-inline ::testing::AssertionResult refused(const TempDir& dir, const std::vector<std::string>& args, int code,
-                                          const std::vector<std::string>& words, const std::string& out) {
-    const RunResult r = run_spt(dir, args);
+inline ::testing::AssertionResult failed_with(const RunResult& r, int code, const std::vector<std::string>& words) {
     if (code == kAnyFailure ? r.code == 0 : r.code != code)
         return ::testing::AssertionFailure() << "exit " << r.code << ", want " << code << ": " << r.err;
     for (const auto& w : words)
         if (r.err.find(w) == std::string::npos) return ::testing::AssertionFailure() << "no '" << w << "' in: " << r.err;
+    return ::testing::AssertionSuccess();
+}
+
+// A command the tool must refuse: failed_with(code, words), and no `out` left behind.
+inline ::testing::AssertionResult refused(const TempDir& dir, const std::vector<std::string>& args, int code,
+                                          const std::vector<std::string>& words, const std::string& out) {
+    if (auto failed = failed_with(run_spt(dir, args), code, words); !failed) return failed;
     if (fs::exists(out)) return ::testing::AssertionFailure() << out << " was left behind";
     return ::testing::AssertionSuccess();
 }
