@@ -11,12 +11,7 @@ CODEC=$BUILD/bench/rate_codec
 SPT=$BUILD/bin/spt
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-STILLS=("$MEDIA"/foreign/coffee-256.png "$MEDIA"/stills/*)
-FRAMES=()
-for v in "$MEDIA"/video/*; do
-  ffmpeg -loglevel error -y -i "$v" -vf "select=eq(n\,30),scale=1280:720" -frames:v 1 "$TMP/$(basename "$v")-720.png"
-  FRAMES+=("$TMP/$(basename "$v")-720.png")
-done
+source "$ROOT/bench/rate_images.sh" "$TMP"
 LAMBDAS=${LAMBDAS:-8,16,24,48,96}
 
 echo "== 1. bytes at 28 dB, coding 1 and 2 (the painter's defaults at 28 dB: lambda 24, colour step 12)"

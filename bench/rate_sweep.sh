@@ -14,11 +14,7 @@ MEDIA=${SPT_MEDIA:-$ROOT/../shared/media}
 CODEC=$BUILD/bench/rate_codec
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-IMAGES=("$MEDIA"/foreign/coffee-256.png "$MEDIA"/stills/*)
-for v in "$MEDIA"/video/*; do  # 1280x720 frames of the clips
-  ffmpeg -loglevel error -y -i "$v" -vf "select=eq(n\,30),scale=1280:720" -frames:v 1 "$TMP/$(basename "$v")-720.png"
-  IMAGES+=("$TMP/$(basename "$v")-720.png")
-done
+source "$ROOT/bench/rate_images.sh" "$TMP"
 echo "command: $CODEC IMAGE --target-psnr 28 --lambda L --color-step Q"
 for img in "${IMAGES[@]}"; do
   for q in $STEPS; do
