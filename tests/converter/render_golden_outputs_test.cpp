@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "cli_test_util.hpp"
@@ -63,55 +64,55 @@ std::vector<float> read_pixels(const std::string& path, int& nch, OIIO::TypeDesc
     return px;
 }
 
-}  // namespace
-
-TEST(RenderGoldenOutputs, LinearExrHoldsTheGoldenCanvas) {
+// Renders every frame MANIFEST.txt lists for the golden files named `prefix`... (at least
+// `at_least` of them) to an `ext` image with spt render, reads its samples back as `type`, and
+// checks that the canvas `to_canvas` rebuilds from them hashes to the frame's render_fnv1a64.
+using ToCanvas = std::function<void(const Header&, const std::vector<float>& px, int nch, Canvas& c)>;
+void expect_images_hash_back(const std::string& prefix, size_t at_least, const std::string& ext, OIIO::TypeDesc type,
+                             const ToCanvas& to_canvas) {
     TempDir d;
-    const auto entries = manifest("linear_");
-    ASSERT_GE(entries.size(), 5u) << "MANIFEST.txt lists no linear_ files";
+    const auto entries = manifest(prefix);
+    ASSERT_GE(entries.size(), at_least) << "MANIFEST.txt lists no " << prefix << " files";
     for (const auto& e : entries) {
-        const std::string out = d.file("f.exr");
+        const std::string out = d.file("f" + ext);
         auto r = run_spt(d, {"render", kGolden + e.file, "-o", out, "--frame", std::to_string(e.frame)});
         ASSERT_EQ(r.code, 0) << e.file << ": " << r.err;
         auto rd = Reader::open(kGolden + e.file);
         ASSERT_TRUE(rd.ok());
         const Header& h = (*rd)->info().header;
         int nch = 0;
-        const auto px = read_pixels(out, nch, OIIO::TypeDesc::HALF);
-        ASSERT_EQ(nch, h.alpha ? 4 : 3) << e.file;
+        const auto px = read_pixels(out, nch, type);
         Canvas c(h);
-        const size_t n = size_t(h.width) * h.height;
-        for (size_t i = 0; i < n; ++i) {
-            for (int k = 0; k < 3; ++k) c.rgb16[i * 3 + k] = float_to_half_code(px[i * nch + k]);  // exact: the value is a half
-            if (h.alpha) c.alpha[i] = uint8_t(std::lround(px[i * 4 + 3] * 255.f));
-        }
+        to_canvas(h, px, nch, c);
         EXPECT_EQ(spt::testing::hex64(spt::testing::fnv1a64(spt::testing::render_bytes(c))), e.render_hash)
             << e.file << " frame " << e.frame;
     }
 }
 
+}  // namespace
+
+TEST(RenderGoldenOutputs, LinearExrHoldsTheGoldenCanvas) {
+    expect_images_hash_back("linear_", 5, ".exr", OIIO::TypeDesc::HALF,
+                            [](const Header& h, const std::vector<float>& px, int nch, Canvas& c) {
+                                ASSERT_EQ(nch, h.alpha ? 4 : 3);
+                                const size_t n = size_t(h.width) * h.height;
+                                for (size_t i = 0; i < n; ++i) {
+                                    // exact: the value is a half
+                                    for (int k = 0; k < 3; ++k) c.rgb16[i * 3 + k] = float_to_half_code(px[i * nch + k]);
+                                    if (h.alpha) c.alpha[i] = uint8_t(std::lround(px[i * 4 + 3] * 255.f));
+                                }
+                            });
+}
+
 TEST(RenderGoldenOutputs, StraightPngPremultipliesBackToTheGoldenCanvas) {
-    TempDir d;
-    const auto entries = manifest("alpha_");
-    ASSERT_GE(entries.size(), 2u) << "MANIFEST.txt lists no alpha_ files";
-    for (const auto& e : entries) {
-        const std::string out = d.file("f.png");
-        auto r = run_spt(d, {"render", kGolden + e.file, "-o", out, "--frame", std::to_string(e.frame)});
-        ASSERT_EQ(r.code, 0) << e.file << ": " << r.err;
-        auto rd = Reader::open(kGolden + e.file);
-        ASSERT_TRUE(rd.ok());
-        const Header& h = (*rd)->info().header;
-        ASSERT_TRUE(h.alpha && h.color == ColorEncoding::Srgb8);
-        int nch = 0;
-        const auto px = read_pixels(out, nch, OIIO::TypeDesc::UINT8);
-        ASSERT_EQ(nch, 4);
-        Canvas c(h);
-        for (size_t i = 0; i < size_t(h.width) * h.height; ++i) {
-            const uint8_t a = uint8_t(px[i * 4 + 3]);
-            c.alpha[i] = a;
-            for (int k = 0; k < 3; ++k) c.rgb[i * 3 + k] = blend8(0, uint8_t(px[i * 4 + k]), a);
-        }
-        EXPECT_EQ(spt::testing::hex64(spt::testing::fnv1a64(spt::testing::render_bytes(c))), e.render_hash)
-            << e.file << " frame " << e.frame;
-    }
+    expect_images_hash_back("alpha_", 2, ".png", OIIO::TypeDesc::UINT8,
+                            [](const Header& h, const std::vector<float>& px, int nch, Canvas& c) {
+                                ASSERT_TRUE(h.alpha && h.color == ColorEncoding::Srgb8);
+                                ASSERT_EQ(nch, 4);
+                                for (size_t i = 0; i < size_t(h.width) * h.height; ++i) {
+                                    const uint8_t a = uint8_t(px[i * 4 + 3]);
+                                    c.alpha[i] = a;
+                                    for (int k = 0; k < 3; ++k) c.rgb[i * 3 + k] = blend8(0, uint8_t(px[i * 4 + k]), a);
+                                }
+                            });
 }
