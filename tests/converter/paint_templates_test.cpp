@@ -6,20 +6,28 @@
 
 #include "io/image_io.hpp"
 #include "io/template_loader.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace spt;
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name) : path(fs::path(SPT_BINARY_DIR) / ("paint_templates_test_" + name)) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using spt_test::TempDir;
+
+// A folder `name` inside the test's folder.
+fs::path folder(const TempDir& d, const std::string& name) {
+    const fs::path p = d.path / name;
+    fs::create_directories(p);
+    return p;
+}
+
+// The error of loading templates from `dir`, which must fail.
+Error load_error(const fs::path& dir) {
+    auto t = io::load_templates(dir.string());
+    EXPECT_FALSE(t.ok()) << dir;
+    return t.ok() ? Error{} : t.error();
+}
 
 void write_gray(const fs::path& p, uint32_t w, uint32_t h, uint8_t v) {
     std::vector<uint8_t> rgb(size_t(w) * h * 3, v);
@@ -49,7 +57,7 @@ TEST(PaintTemplates, ShippedFoldersLoadAsBitmaps) {
 }
 
 TEST(PaintTemplates, AnySizeUpTo1024AndNameOrder) {
-    TempDir d("sizes");
+    TempDir d;
     write_gray(d.path / "b.png", 17, 5, 200);
     write_gray(d.path / "a.png", 1024, 2, 9);
     std::ofstream(d.path / "notes.txt") << "ignored";
@@ -62,32 +70,17 @@ TEST(PaintTemplates, AnySizeUpTo1024AndNameOrder) {
 }
 
 TEST(PaintTemplates, ErrorsNameTheProblem) {
-    auto missing = io::load_templates("/nonexistent/spt-templates");
-    ASSERT_FALSE(missing.ok());
-    EXPECT_NE(missing.error().message.find("/nonexistent/spt-templates"), std::string::npos);
-
-    TempDir empty("empty");
-    std::ofstream(empty.path / "readme.txt") << "no images";
-    auto none = io::load_templates(empty.path.string());
-    ASSERT_FALSE(none.ok());
-    EXPECT_NE(none.error().message.find("no image"), std::string::npos);
-
-    TempDir big("big");
-    write_gray(big.path / "huge.png", 1025, 4, 255);
-    auto huge = io::load_templates(big.path.string());
-    ASSERT_FALSE(huge.ok());
-    EXPECT_EQ(huge.error().code, Code::LimitExceeded);
-    EXPECT_NE(huge.error().message.find("huge.png"), std::string::npos);
-
-    TempDir blank("blank");
-    write_gray(blank.path / "zero.png", 8, 8, 0);
-    auto zero = io::load_templates(blank.path.string());
-    ASSERT_FALSE(zero.ok());
-    EXPECT_NE(zero.error().message.find("zero.png"), std::string::npos);
-
-    TempDir bad("bad");
-    std::ofstream(bad.path / "broken.png") << "this is not a PNG";
-    auto broken = io::load_templates(bad.path.string());
-    ASSERT_FALSE(broken.ok());
-    EXPECT_NE(broken.error().message.find("broken.png"), std::string::npos);
+    EXPECT_NE(load_error("/nonexistent/spt-templates").message.find("/nonexistent/spt-templates"), std::string::npos);
+    TempDir d;
+    const fs::path empty = folder(d, "empty"), big = folder(d, "big"), blank = folder(d, "blank"), bad = folder(d, "bad");
+    std::ofstream(empty / "readme.txt") << "no images";
+    EXPECT_NE(load_error(empty).message.find("no image"), std::string::npos);
+    write_gray(big / "huge.png", 1025, 4, 255);
+    const Error huge = load_error(big);
+    EXPECT_EQ(huge.code, Code::LimitExceeded);
+    EXPECT_NE(huge.message.find("huge.png"), std::string::npos);
+    write_gray(blank / "zero.png", 8, 8, 0);
+    EXPECT_NE(load_error(blank).message.find("zero.png"), std::string::npos);
+    std::ofstream(bad / "broken.png") << "this is not a PNG";
+    EXPECT_NE(load_error(bad).message.find("broken.png"), std::string::npos);
 }
