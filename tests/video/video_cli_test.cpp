@@ -103,16 +103,21 @@ Interrupted paint_and_interrupt(const std::vector<std::string>& args, int sig, d
     return r;
 }
 
+// Paints a `frames`-frame 96x64 sequence written into `dir` to dir/out.spt, one thread, and
+// sends `sig` once it has reported 3 frames.
+Interrupted interrupt_a_sequence_paint(const fs::path& dir, int frames, int sig) {
+    write_sequence(dir, frames, 96, 64);
+    return paint_and_interrupt({"paint", (dir / "seq.####.png").string(), "-o", (dir / "out.spt").string(), "--sets",
+                                "4", "--max-strokes", "400", "--threads", "1", "--progress", "json"},
+                               sig, 3);
+}
+
 void check_interrupt(int sig) {
     if (!have_tool()) GTEST_FAIL() << "spt binary not built";
     const auto dir = spt_test::temp_dir("cli_sig" + std::to_string(sig));
     const int total = 150;
-    write_sequence(dir, total, 96, 64);
     const std::string out = (dir / "out.spt").string();
-    const Interrupted r = paint_and_interrupt(
-        {"paint", (dir / "seq.####.png").string(), "-o", out, "--sets", "4", "--max-strokes", "400",
-         "--threads", "1", "--progress", "json"},
-        sig, 3);
+    const Interrupted r = interrupt_a_sequence_paint(dir, total, sig);
     ASSERT_TRUE(r.sent) << "the encode ended before reporting 3 frames";
     EXPECT_FALSE(r.signalled) << "one signal stops cleanly; it must not kill the process";
     EXPECT_FALSE(fs::exists(out + ".partial")) << "a .partial file was left behind";
@@ -153,12 +158,7 @@ TEST(VideoCli, SigtermLeavesAValidFileOrNothing) { check_interrupt(SIGTERM); }
 TEST(VideoCli, SigkillLeavesNothing) {
     if (!have_tool()) GTEST_FAIL() << "spt binary not built";
     const auto dir = spt_test::temp_dir("cli_sigkill");
-    write_sequence(dir, 150, 96, 64);
-    const std::string out = (dir / "out.spt").string();
-    const Interrupted r = paint_and_interrupt(
-        {"paint", (dir / "seq.####.png").string(), "-o", out, "--sets", "4", "--max-strokes", "400",
-         "--threads", "1", "--progress", "json"},
-        SIGKILL, 3);
+    const Interrupted r = interrupt_a_sequence_paint(dir, 150, SIGKILL);
     ASSERT_TRUE(r.sent) << "the encode ended before reporting 3 frames";
     EXPECT_TRUE(r.signalled);
     for (const auto& e : fs::directory_iterator(dir)) {
