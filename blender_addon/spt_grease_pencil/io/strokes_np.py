@@ -210,6 +210,19 @@ def _bad_codes(rows, linear):
     return (rows[:, R:B + 1] > MAX_HALF_CODE).any(axis=1)
 
 
+def _run_rows(rec, columns, linear, path, at, size, code_error):
+    """The table rows of a run of fixed-size records (`size` bytes each, the first at byte `at`):
+    (column, values) pairs, then the colour; a colour code out of range names its record."""
+    rows = np.zeros((rec.shape[0], NCOL), dtype=np.int32)
+    for c, values in columns:
+        rows[:, c] = values
+    _colour_columns(rows, rec, linear)
+    bad = _bad_codes(rows, linear)
+    if bad.any():
+        raise _err(path, at + size * int(np.argmax(bad)), code_error)
+    return rows
+
+
 def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: int, nsets: int,
                   norients: int, max_curve_points: int, curves: list, max_polygon_vertices: int = 1 << 16,
                   linear: bool = False):
@@ -244,17 +257,8 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
             bad = (np.abs(rec["x"]) > MAX_POS) | (np.abs(rec["y"]) > MAX_POS)
             if bad.any():
                 raise _err(path, base + pos + ssz * int(np.argmax(bad)), "stamp position out of range")
-            rows = np.zeros((run, NCOL), dtype=np.int32)
-            rows[:, SET] = rec["s"]
-            rows[:, TMPL] = rec["t"]
-            rows[:, ORIENT] = rec["o"]
-            rows[:, X] = rec["x"]
-            rows[:, Y] = rec["y"]
-            _colour_columns(rows, rec, linear)
-            bad = _bad_codes(rows, linear)
-            if bad.any():
-                raise _err(path, base + pos + ssz * int(np.argmax(bad)), code_error)
-            pieces.append(rows)
+            columns = ((SET, rec["s"]), (TMPL, rec["t"]), (ORIENT, rec["o"]), (X, rec["x"]), (Y, rec["y"]))
+            pieces.append(_run_rows(rec, columns, linear, path, base + pos, ssz, code_error))
             pos += ssz * run
             done += run
         elif kind == AFFINE:
@@ -270,17 +274,8 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
             for bad, what in checks:
                 if bad.any():
                     raise _err(path, base + pos + asz * int(np.argmax(bad)), what)
-            rows = np.zeros((run, NCOL), dtype=np.int32)
-            rows[:, KIND] = AFFINE
-            rows[:, TMPL] = rec["t"]
-            rows[:, X] = rec["x"]
-            rows[:, Y] = rec["y"]
-            rows[:, MA:MD + 1] = m
-            _colour_columns(rows, rec, linear)
-            bad = _bad_codes(rows, linear)
-            if bad.any():
-                raise _err(path, base + pos + asz * int(np.argmax(bad)), code_error)
-            pieces.append(rows)
+            columns = ((KIND, AFFINE), (TMPL, rec["t"]), (X, rec["x"]), (Y, rec["y"]), (slice(MA, MD + 1), m))
+            pieces.append(_run_rows(rec, columns, linear, path, base + pos, asz, code_error))
             pos += asz * run
             done += run
         elif kind == CURVE:
