@@ -7,6 +7,17 @@
 
 using namespace spt;
 
+namespace {
+
+// The error of a parse that must fail (empty when it parsed); `what` names the input.
+template <class R>
+Error error_of(const R& r, const std::string& what = {}) {
+    EXPECT_FALSE(r.ok()) << "parsed: " << what;
+    return r.ok() ? Error{} : r.error();
+}
+
+}  // namespace
+
 TEST(Json, ParsesValuesAndLines) {
     auto v = json::parse("{\"a\": [1, -2.5e1, true, null],\n \"b\": \"x\\u00e9\\n\"}", "t.json");
     ASSERT_TRUE(v.ok()) << v.error().message;
@@ -34,17 +45,15 @@ TEST(Json, ErrorsNameFileAndLine) {
         {"", "end of document"},
     };
     for (const auto& c : cases) {
-        auto v = json::parse(c.text, "t.json");
-        ASSERT_FALSE(v.ok()) << c.text;
-        EXPECT_NE(v.error().message.find(c.expect), std::string::npos) << v.error().message;
+        const Error v = error_of(json::parse(c.text, "t.json"), c.text);
+        EXPECT_NE(v.message.find(c.expect), std::string::npos) << v.message;
     }
 }
 
 TEST(Json, DepthLimitStopsDeepNesting) {
     std::string deep(100000, '[');
-    auto v = json::parse(deep, "deep.json");
-    ASSERT_FALSE(v.ok());
-    EXPECT_NE(v.error().message.find("nesting"), std::string::npos);
+    const Error v = error_of(json::parse(deep, "deep.json"));
+    EXPECT_NE(v.message.find("nesting"), std::string::npos);
 }
 
 TEST(Xml, ParsesElementsAttributesEntities) {
@@ -75,10 +84,9 @@ TEST(Xml, ErrorsNameFileAndLine) {
         {"", "root element"},
     };
     for (const auto& c : cases) {
-        auto e = xml::Document::parse(c.text, "t.svg");
-        ASSERT_FALSE(e.ok()) << c.text;
-        EXPECT_NE(e.error().message.find(c.expect), std::string::npos) << e.error().message;
-        EXPECT_EQ(e.error().message.rfind("t.svg", 0), 0u) << e.error().message;
+        const Error e = error_of(xml::Document::parse(c.text, "t.svg"), c.text);
+        EXPECT_NE(e.message.find(c.expect), std::string::npos) << e.message;
+        EXPECT_EQ(e.message.rfind("t.svg", 0), 0u) << e.message;
     }
 }
 
@@ -87,9 +95,8 @@ TEST(Xml, NoEntityIsDefinedByTheDocument) {
     // a reference to an undeclared entity stays as written.
     for (const char* dtd : {"<!DOCTYPE svg [<!ENTITY a \"aaaaaaaaaa\"><!ENTITY b \"&a;&a;&a;&a;&a;&a;\">]>",
                             "<!DOCTYPE svg [\n<!ENTITY x SYSTEM \"file:///etc/passwd\">\n]>"}) {
-        auto d = xml::Document::parse(std::string(dtd) + "\n<svg t=\"&b;&x;\">&b;</svg>", "t.svg");
-        ASSERT_FALSE(d.ok()) << dtd;
-        EXPECT_NE(d.error().message.find("declares entities"), std::string::npos) << d.error().message;
+        const Error d = error_of(xml::Document::parse(std::string(dtd) + "\n<svg t=\"&b;&x;\">&b;</svg>", "t.svg"), dtd);
+        EXPECT_NE(d.message.find("declares entities"), std::string::npos) << d.message;
     }
     auto d = xml::Document::parse("<!DOCTYPE svg PUBLIC \"-//W3C//DTD SVG 1.1//EN\" \"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd\">\n"
                                   "<svg t=\"&foo;&amp;\">&b;</svg>", "t.svg");
@@ -100,34 +107,29 @@ TEST(Xml, NoEntityIsDefinedByTheDocument) {
 TEST(Xml, DepthLimit) {
     std::string deep;
     for (int i = 0; i < 1000; ++i) deep += "<g>";
-    auto e = xml::Document::parse(deep, "deep.svg");  // unterminated too: the depth is named
-    ASSERT_FALSE(e.ok());
-    EXPECT_NE(e.error().message.find("deeper"), std::string::npos) << e.error().message;
+    const Error e = error_of(xml::Document::parse(deep, "deep.svg"));  // unterminated too: the depth is named
+    EXPECT_NE(e.message.find("deeper"), std::string::npos) << e.message;
     for (int i = 0; i < 1000; ++i) deep += "</g>";
-    auto f = xml::Document::parse(deep, "deep.svg");
-    ASSERT_FALSE(f.ok());
-    EXPECT_NE(f.error().message.find("deeper"), std::string::npos) << f.error().message;
+    const Error f = error_of(xml::Document::parse(deep, "deep.svg"));
+    EXPECT_NE(f.message.find("deeper"), std::string::npos) << f.message;
 }
 
 TEST(Xml, ElementAndSizeLimitsBeforeParsing) {
     xml::ParseLimits lim;
     lim.max_elements = 3;
-    auto many = xml::Document::parse("<svg><g/><g/><g/></svg>", "t.svg", lim);
-    ASSERT_FALSE(many.ok());
-    EXPECT_EQ(many.error().code, Code::LimitExceeded);
+    const Error many = error_of(xml::Document::parse("<svg><g/><g/><g/></svg>", "t.svg", lim));
+    EXPECT_EQ(many.code, Code::LimitExceeded);
     EXPECT_TRUE(xml::Document::parse("<svg><g/><g/></svg>", "t.svg", lim).ok());
     lim = {};
     lim.max_bytes = 8;
-    auto big = xml::Document::parse("<svg></svg>", "t.svg", lim);
-    ASSERT_FALSE(big.ok());
-    EXPECT_EQ(big.error().code, Code::LimitExceeded);
+    const Error big = error_of(xml::Document::parse("<svg></svg>", "t.svg", lim));
+    EXPECT_EQ(big.code, Code::LimitExceeded);
 }
 
 TEST(Json, ErrorsGiveLineAndColumnAndTheByteOffset) {
-    auto v = json::parse("{\n  \"a\": [1,\n    tru]\n}", "t.json");
-    ASSERT_FALSE(v.ok());
-    EXPECT_EQ(v.error().message.rfind("t.json:3:", 0), 0u) << v.error().message;
-    EXPECT_NE(v.error().message.find("t.json:3:8:"), std::string::npos) << v.error().message;  // the byte after "tru"
+    const Error v = error_of(json::parse("{\n  \"a\": [1,\n    tru]\n}", "t.json"));
+    EXPECT_EQ(v.message.rfind("t.json:3:", 0), 0u) << v.message;
+    EXPECT_NE(v.message.find("t.json:3:8:"), std::string::npos) << v.message;  // the byte after "tru"
     // Lines of values after multi-line strings, numbers at line ends and nested containers.
     auto ok = json::parse("[1\n,\n{\"k\":\n\"v\"},\n[\n]\n, 2.5e0\n]", "t.json");
     ASSERT_TRUE(ok.ok()) << ok.error().message;
@@ -142,21 +144,18 @@ TEST(Json, ErrorsGiveLineAndColumnAndTheByteOffset) {
 TEST(Json, LimitsAreCheckedBeforeTheDocumentIsBuilt) {
     json::ParseLimits lim;
     lim.max_bytes = 10;
-    auto big = json::parse("[1, 2, 3, 4, 5]", "t.json", lim);
-    ASSERT_FALSE(big.ok());
-    EXPECT_EQ(big.error().code, Code::LimitExceeded);
+    const Error big = error_of(json::parse("[1, 2, 3, 4, 5]", "t.json", lim));
+    EXPECT_EQ(big.code, Code::LimitExceeded);
     lim = {};
     lim.max_values = 4;
-    auto many = json::parse("[1, 2, 3, 4, 5]", "t.json", lim);
-    ASSERT_FALSE(many.ok());
-    EXPECT_EQ(many.error().code, Code::LimitExceeded);
-    EXPECT_NE(many.error().message.find("too many"), std::string::npos);
+    const Error many = error_of(json::parse("[1, 2, 3, 4, 5]", "t.json", lim));
+    EXPECT_EQ(many.code, Code::LimitExceeded);
+    EXPECT_NE(many.message.find("too many"), std::string::npos);
     // Duplicate keys in a large object (the set path) as in a small one.
     std::string obj = "{";
     for (int i = 0; i < 100; ++i) obj += "\"k" + std::to_string(i) + "\": " + std::to_string(i) + ", ";
-    auto dup = json::parse(obj + "\"k42\": 0}", "t.json");
-    ASSERT_FALSE(dup.ok());
-    EXPECT_NE(dup.error().message.find("duplicate key \"k42\""), std::string::npos) << dup.error().message;
+    const Error dup = error_of(json::parse(obj + "\"k42\": 0}", "t.json"));
+    EXPECT_NE(dup.message.find("duplicate key \"k42\""), std::string::npos) << dup.message;
     EXPECT_TRUE(json::parse(obj + "\"k100\": 0}", "t.json").ok());
 }
 
