@@ -81,15 +81,22 @@ size_t count(const std::string& text, const std::string& what) {
 
 bool have_tools() { return fs::exists(kChromium) && std::string(SPT_TOOL).size() > 0 && fs::exists(SPT_TOOL); }
 
+// Imports the shared media file `rel` (foreign/...) into `doc`; fails when it is missing.
+void import_media(const std::string& rel, import::Document& doc) {
+    const std::string f = std::string(SPT_MEDIA_DIR) + "/" + rel;
+    if (!fs::exists(f)) GTEST_FAIL() << "media missing: " << f;
+    auto d = import::import_path(f, "");
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    doc = std::move(*d);
+}
+
 }  // namespace
 
 TEST(SvgInBrowser, ShapePaintingMatchesRenderer) {
     if (!have_tools()) GTEST_FAIL() << "needs " << kChromium << " and the spt tool";
-    const std::string f = std::string(SPT_MEDIA_DIR) + "/foreign/coffee-primitive-ellipses.svg";
-    if (!fs::exists(f)) GTEST_FAIL() << "media missing: " << f;
-    auto doc = import::import_path(f, "");
-    ASSERT_TRUE(doc.ok()) << doc.error().message;
-    const double p = browser_psnr(*doc, "shapes");
+    import::Document doc;
+    ASSERT_NO_FATAL_FAILURE(import_media("foreign/coffee-primitive-ellipses.svg", doc));
+    const double p = browser_psnr(doc, "shapes");
     std::printf("chromium vs spt render, primitive ellipses: PSNR %.2f dB\n", p);
     EXPECT_GE(p, 30.0);  // edges differ: browsers anti-alias, spt samples pixel centres
 }
@@ -97,14 +104,12 @@ TEST(SvgInBrowser, ShapePaintingMatchesRenderer) {
 TEST(SvgInBrowser, PolygonsMatchRenderer) {
     if (!have_tools()) GTEST_FAIL() << "needs " << kChromium << " and the spt tool";
     // geometrize's rotated ellipses import as 20-vertex polygon strokes (format 1.2).
-    const std::string f = std::string(SPT_MEDIA_DIR) + "/foreign/coffee-geometrize-rotellipses.svg";
-    if (!fs::exists(f)) GTEST_FAIL() << "media missing: " << f;
-    auto doc = import::import_path(f, "");
-    ASSERT_TRUE(doc.ok()) << doc.error().message;
+    import::Document doc;
+    ASSERT_NO_FATAL_FAILURE(import_media("foreign/coffee-geometrize-rotellipses.svg", doc));
     size_t polygons = 0;
-    for (const auto& s : doc->frames.back().added) polygons += s.kind == StrokeKind::Polygon;
+    for (const auto& s : doc.frames.back().added) polygons += s.kind == StrokeKind::Polygon;
     ASSERT_GE(polygons, 250u);
-    const double p = browser_psnr(*doc, "polygons");
+    const double p = browser_psnr(doc, "polygons");
     std::printf("chromium vs spt render, geometrize rotated ellipses as polygons: PSNR %.2f dB\n", p);
     EXPECT_GE(p, 28.0);  // browsers anti-alias the edges that spt samples at pixel centres
 }
