@@ -81,6 +81,28 @@ TEST(VideoPaint, MissingFrameIsAnErrorNamingIt) {
     std::filesystem::remove_all(dir);
 }
 
+// A frame of another size stops the paint, naming it, on the 8-bit and the scene-linear reading
+// paths; --skip-bad-frames repeats the previous frame instead.
+TEST(VideoPaint, AFrameOfAnotherSizeIsAnErrorNamingIt) {
+    const auto dir = spt_test::temp_dir("size");
+    write_sequence(dir, 1, 3);
+    const auto rgb = spt_test::scene_frame(0, 2, 40, 24);
+    ASSERT_TRUE(io::write_image((dir / "seq.0002.png").string(), 40, 24, rgb.data()).ok());
+    for (const char* encoding : {"srgb8", "linear"}) {
+        auto o = options((dir / "seq.####.png").string(), (dir / "out.spt").string());
+        o.color_encoding = encoding;
+        Status st = paint_quietly(o);
+        ASSERT_FALSE(st.ok()) << encoding;
+        EXPECT_NE(st.error().message.find("seq.0002.png: frame 2 is 40x24, the sequence is 64x48"), std::string::npos)
+            << encoding << ": " << st.error().message;
+        o.skip_bad_frames = true;
+        VideoPaintReport rep;
+        ASSERT_TRUE(paint_quietly(o, &rep).ok()) << encoding;
+        EXPECT_EQ(rep.skipped_frames, 1u) << encoding;
+    }
+    std::filesystem::remove_all(dir);
+}
+
 TEST(VideoPaint, UnreadableFrameIsSkippedWhenAsked) {
     const auto dir = spt_test::temp_dir("unreadable");
     write_sequence(dir, 1, 5);

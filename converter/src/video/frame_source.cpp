@@ -15,9 +15,24 @@ namespace spt::video {
 
 namespace {
 
-// Checks a decoded frame against the first one's size.
-bool same_size(const io::Image& a, const io::Image& b) { return a.width == b.width && a.height == b.height; }
-bool same_size(const io::SceneImage& a, const io::SceneImage& b) { return a.width == b.width && a.height == b.height; }
+// Frame `n` of a sequence, read from `path` by `read` (8-bit or scene-linear) into `out`; else
+// `problem` says why not: the reader's error (naming the file), or a size other than `prev`'s,
+// the previous frame's, when there is one.
+template <class Image, class Read>
+void read_sequence_frame(const Read& read, const std::string& path, long n, const Image* prev, Image& out,
+                         std::string& problem) {
+    Result<Image> img = read(path);
+    if (!img) {
+        problem = img.error().message;
+        if (problem.find(path) == std::string::npos) problem = path + ": " + problem;
+    } else if (prev && (img->width != prev->width || img->height != prev->height)) {
+        problem = path + ": frame " + std::to_string(n) + " is " + std::to_string(img->width) + "x" +
+                  std::to_string(img->height) + ", the sequence is " + std::to_string(prev->width) + "x" +
+                  std::to_string(prev->height);
+    } else {
+        out = std::move(*img);
+    }
+}
 
 class SequenceSource final : public FrameSource {
 public:
@@ -39,29 +54,11 @@ public:
         if (f == files_.end()) {
             problem = path + ": frame " + std::to_string(n) + " is missing from the sequence";
         } else if (scene_) {
-            Result<io::SceneImage> img = io::read_scene_image(path, scene_opts_);
-            if (!img) {
-                problem = img.error().message;
-                if (problem.find(path) == std::string::npos) problem = path + ": " + problem;
-            } else if (have_prev_ && !same_size(*img, prev_scene_)) {
-                problem = path + ": frame " + std::to_string(n) + " is " + std::to_string(img->width) + "x" +
-                          std::to_string(img->height) + ", the sequence is " + std::to_string(prev_scene_.width) +
-                          "x" + std::to_string(prev_scene_.height);
-            } else {
-                out.scene = std::move(*img);
-            }
+            read_sequence_frame([&](const std::string& p) { return io::read_scene_image(p, scene_opts_); }, path, n,
+                                have_prev_ ? &prev_scene_ : nullptr, out.scene, problem);
         } else {
-            Result<io::Image> img = io::read_image(path);
-            if (!img) {
-                problem = img.error().message;
-                if (problem.find(path) == std::string::npos) problem = path + ": " + problem;
-            } else if (have_prev_ && !same_size(*img, prev_)) {
-                problem = path + ": frame " + std::to_string(n) + " is " + std::to_string(img->width) + "x" +
-                          std::to_string(img->height) + ", the sequence is " + std::to_string(prev_.width) +
-                          "x" + std::to_string(prev_.height);
-            } else {
-                out.image = std::move(*img);
-            }
+            read_sequence_frame([](const std::string& p) { return io::read_image(p); }, path, n,
+                                have_prev_ ? &prev_ : nullptr, out.image, problem);
         }
         if (!problem.empty()) {
             // The first frame has nothing to repeat, so it must be sound even when skipping.
