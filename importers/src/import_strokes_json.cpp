@@ -193,6 +193,25 @@ const Value* field(const Ctx& c, const Value& obj, const char* key, const std::s
     return v;
 }
 
+// The "points" array of a polygon or curve stroke, of min..max items (`noun` in the error).
+const Value* points_field(const Ctx& c, const Value& s, const std::string& where, size_t min, size_t max,
+                          const char* noun, Error& e) {
+    const Value* f = field(c, s, "points", where, e);
+    if (!f || !c.need(*f, Type::Array, where + ".points", e)) return nullptr;
+    if (f->items.size() < min || f->items.size() > max) {
+        e = c.err(*f, where + ".points: " + std::to_string(min) + ".." + std::to_string(max) + " " + noun + " required");
+        return nullptr;
+    }
+    return f;
+}
+
+// One item `pn` of a points array: an array of `n` values, written `shape` in the error.
+bool point_item(const Ctx& c, const Value& p, const std::string& pn, size_t n, const char* shape, Error& e) {
+    if (!c.need(p, Type::Array, pn, e)) return false;
+    if (p.items.size() != n) { e = c.err(p, pn + " must be " + shape); return false; }
+    return true;
+}
+
 bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const StreamInfo& info,
                  std::vector<Stroke>& out, ImportReport& rep, Error& e) {
     if (!c.need(s, Type::Object, where, e)) return false;
@@ -250,17 +269,12 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
             if (v == 1) { e = c.err(*n, where + ".supersample must be 0 or 2..16"); return false; }
             pg.supersample = uint8_t(v);
         }
-        const Value* f = field(c, s, "points", where, e);
-        if (!f || !c.need(*f, Type::Array, where + ".points", e)) return false;
-        if (f->items.size() < 3 || f->items.size() > c.lim().max_polygon_vertices) {
-            e = c.err(*f, where + ".points: 3.." + std::to_string(c.lim().max_polygon_vertices) + " vertices required");
-            return false;
-        }
+        const Value* f = points_field(c, s, where, 3, c.lim().max_polygon_vertices, "vertices", e);
+        if (!f) return false;
         for (size_t i = 0; i < f->items.size(); ++i) {
             const std::string pn = where + ".points[" + std::to_string(i) + "]";
             const Value& p = f->items[i];
-            if (!c.need(p, Type::Array, pn, e)) return false;
-            if (p.items.size() != 2) { e = c.err(p, pn + " must be [x, y]"); return false; }
+            if (!point_item(c, p, pn, 2, "[x, y]", e)) return false;
             PolygonVertex q;
             if (!c.q4(p.items[0], pn + ".x", kPosPx, q.x, e) || !c.q4(p.items[1], pn + ".y", kPosPx, q.y, e)) return false;
             pg.points.push_back(q);
@@ -295,17 +309,12 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
     } else if (t == "curve") {
         CurveStroke cv;
         if (!read_color(c, s, where, cv.color, e)) return false;
-        const Value* f = field(c, s, "points", where, e);
-        if (!f || !c.need(*f, Type::Array, where + ".points", e)) return false;
-        if (f->items.empty() || f->items.size() > c.lim().max_curve_points) {
-            e = c.err(*f, where + ".points: 1.." + std::to_string(c.lim().max_curve_points) + " points required");
-            return false;
-        }
+        const Value* f = points_field(c, s, where, 1, c.lim().max_curve_points, "points", e);
+        if (!f) return false;
         for (size_t i = 0; i < f->items.size(); ++i) {
             const std::string pn = where + ".points[" + std::to_string(i) + "]";
             const Value& p = f->items[i];
-            if (!c.need(p, Type::Array, pn, e)) return false;
-            if (p.items.size() != 3) { e = c.err(p, pn + " must be [x, y, width]"); return false; }
+            if (!point_item(c, p, pn, 3, "[x, y, width]", e)) return false;
             CurvePoint q;
             int32_t w;
             if (!c.q4(p.items[0], pn + ".x", kPosPx, q.x, e) || !c.q4(p.items[1], pn + ".y", kPosPx, q.y, e) ||

@@ -254,6 +254,19 @@ TEST(ImportErrors, NameFileLineAndElement) {
         {"e7.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":10,\"height\":10},\n\"frames\":[{\"strokes\":[\n{\"type\":\"blob\"}]}]}", "e7.json:3: frames[0].strokes[0]: unknown stroke type"},
         {"e8.json", "{\"format\":\"spt-strokes\",\"version\":4}", "version 4"},
         {"e9.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":100000,\"height\":10},\"frames\":[]}", "canvas.width"},
+        // The points of polygon (version 2) and curve strokes: how many, and each one's shape.
+        {"e10.json", "{\"format\":\"spt-strokes\",\"version\":2,\"canvas\":{\"width\":10,\"height\":10},\"strokes\":[\n"
+                     "{\"type\":\"polygon\",\"color\":[1,2,3],\"points\":[[0,0],[1,1]]}]}",
+         "e10.json:2: frames[0].strokes[0].points: 3..65536 vertices required"},
+        {"e11.json", "{\"format\":\"spt-strokes\",\"version\":2,\"canvas\":{\"width\":10,\"height\":10},\"strokes\":[\n"
+                     "{\"type\":\"polygon\",\"color\":[1,2,3],\"points\":[[0,0],[1,1],[2]]}]}",
+         "strokes[0].points[2] must be [x, y]"},
+        {"e12.json", "{\"format\":\"spt-strokes\",\"version\":2,\"canvas\":{\"width\":10,\"height\":10},\"strokes\":[\n"
+                     "{\"type\":\"curve\",\"color\":[1,2,3],\"points\":[]}]}",
+         "e12.json:2: frames[0].strokes[0].points: 1..65536 points required"},
+        {"e13.json", "{\"format\":\"spt-strokes\",\"version\":2,\"canvas\":{\"width\":10,\"height\":10},\"strokes\":[\n"
+                     "{\"type\":\"curve\",\"color\":[1,2,3],\"points\":[[0,0]]}]}",
+         "strokes[0].points[0] must be [x, y, width]"},
     };
     for (const auto& c : cases) {
         auto d = import_text(c.name, c.text);
