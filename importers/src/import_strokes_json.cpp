@@ -205,10 +205,20 @@ const Value* points_field(const Ctx& c, const Value& s, const std::string& where
     return f;
 }
 
-// One item `pn` of a points array: an array of `n` values, written `shape` in the error.
-bool point_item(const Ctx& c, const Value& p, const std::string& pn, size_t n, const char* shape, Error& e) {
-    if (!c.need(p, Type::Array, pn, e)) return false;
-    if (p.items.size() != n) { e = c.err(p, pn + " must be " + shape); return false; }
+// `v`, named `name`: an array of 1..`max` entries.
+bool list_of(const Ctx& c, const Value& v, const std::string& name, size_t max, Error& e) {
+    if (!c.need(v, Type::Array, name, e)) return false;
+    if (v.items.empty() || v.items.size() > max) {
+        e = c.err(v, name + " must hold 1.." + std::to_string(max) + " entries");
+        return false;
+    }
+    return true;
+}
+
+// `v`, named `name`: an array of `n` values, written `shape` in the error ("[x, y]", ...).
+bool tuple_of(const Ctx& c, const Value& v, const std::string& name, size_t n, const char* shape, Error& e) {
+    if (!c.need(v, Type::Array, name, e)) return false;
+    if (v.items.size() != n) { e = c.err(v, name + " must be " + shape); return false; }
     return true;
 }
 
@@ -274,7 +284,7 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
         for (size_t i = 0; i < f->items.size(); ++i) {
             const std::string pn = where + ".points[" + std::to_string(i) + "]";
             const Value& p = f->items[i];
-            if (!point_item(c, p, pn, 2, "[x, y]", e)) return false;
+            if (!tuple_of(c, p, pn, 2, "[x, y]", e)) return false;
             PolygonVertex q;
             if (!c.q4(p.items[0], pn + ".x", kPosPx, q.x, e) || !c.q4(p.items[1], pn + ".y", kPosPx, q.y, e)) return false;
             pg.points.push_back(q);
@@ -314,7 +324,7 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
         for (size_t i = 0; i < f->items.size(); ++i) {
             const std::string pn = where + ".points[" + std::to_string(i) + "]";
             const Value& p = f->items[i];
-            if (!point_item(c, p, pn, 3, "[x, y, width]", e)) return false;
+            if (!tuple_of(c, p, pn, 3, "[x, y, width]", e)) return false;
             CurvePoint q;
             int32_t w;
             if (!c.q4(p.items[0], pn + ".x", kPosPx, q.x, e) || !c.q4(p.items[1], pn + ".y", kPosPx, q.y, e) ||
@@ -455,14 +465,12 @@ bool read_header(Ctx& c, const Value& root, Header& h, Error& e) {
         }
     }
     if ((f = root.find("sets"))) {
-        if (!c.need(*f, Type::Array, "sets", e)) return false;
-        if (f->items.empty() || f->items.size() > 16) { e = c.err(*f, "sets must hold 1..16 entries"); return false; }
+        if (!list_of(c, *f, "sets", 16, e)) return false;
         h.sets.clear();
         for (size_t i = 0; i < f->items.size(); ++i) {
             const Value& s = f->items[i];
             const std::string n = "sets[" + std::to_string(i) + "]";
-            if (!c.need(s, Type::Array, n, e)) return false;
-            if (s.items.size() != 2) { e = c.err(s, n + " must be [width, height]"); return false; }
+            if (!tuple_of(c, s, n, 2, "[width, height]", e)) return false;
             int64_t sw, sh;
             if (!c.integer(s.items[0], n + "[0]", 1, 4096, sw, e) || !c.integer(s.items[1], n + "[1]", 1, 4096, sh, e)) return false;
             h.sets.push_back({uint16_t(sw), uint16_t(sh)});
@@ -474,14 +482,12 @@ bool read_header(Ctx& c, const Value& root, Header& h, Error& e) {
             if (!c.integer(*f, "orientations", 1, 64, n, e)) return false;
             h.orientations = default_orientations(int(n));
         } else {
-            if (!c.need(*f, Type::Array, "orientations", e)) return false;
-            if (f->items.empty() || f->items.size() > 64) { e = c.err(*f, "orientations must hold 1..64 entries"); return false; }
+            if (!list_of(c, *f, "orientations", 64, e)) return false;
             h.orientations.clear();
             for (size_t i = 0; i < f->items.size(); ++i) {
                 const Value& o = f->items[i];
                 const std::string n = "orientations[" + std::to_string(i) + "]";
-                if (!c.need(o, Type::Array, n, e)) return false;
-                if (o.items.size() != 2) { e = c.err(o, n + " must be [cos_q14, sin_q14]"); return false; }
+                if (!tuple_of(c, o, n, 2, "[cos_q14, sin_q14]", e)) return false;
                 int64_t co, si;
                 if (!c.integer(o.items[0], n + "[0]", -16384, 16384, co, e) || !c.integer(o.items[1], n + "[1]", -16384, 16384, si, e)) return false;
                 if (co * co + si * si > (int64_t(1) << 28) + (1 << 16)) { e = c.err(o, n + " is longer than unit length"); return false; }
@@ -530,8 +536,7 @@ bool read_frame(const Ctx& c, const Value& fv, size_t index, const StreamInfo& i
         for (size_t i = 0; i < f->items.size(); ++i) {
             const Value& v = f->items[i];
             const std::string n = where + ".motion.vectors[" + std::to_string(i) + "]";
-            if (!c.need(v, Type::Array, n, e)) return false;
-            if (v.items.size() != 2) { e = c.err(v, n + " must be [dx, dy]"); return false; }
+            if (!tuple_of(c, v, n, 2, "[dx, dy]", e)) return false;
             int32_t dx, dy;
             if (!c.q4(v.items[0], n + "[0]", 2047.9375, dx, e) || !c.q4(v.items[1], n + "[1]", 2047.9375, dy, e)) return false;
             fr.motion.vectors.emplace_back(int16_t(dx), int16_t(dy));
@@ -586,8 +591,7 @@ Result<Document> load(const std::string& path, std::string text, const ImportOpt
         for (size_t i = 0; i < rois->items.size(); ++i) {
             const Value& v = rois->items[i];
             const std::string n = "rois[" + std::to_string(i) + "]";
-            if (!c.need(v, Type::Array, n, e)) return e;
-            if (v.items.size() != 6) return c.err(v, n + " must be [first_frame, last_frame, x, y, w, h]");
+            if (!tuple_of(c, v, n, 6, "[first_frame, last_frame, x, y, w, h]", e)) return e;
             int64_t x[6];
             for (int k = 0; k < 6; ++k)
                 if (!c.integer(v.items[size_t(k)], n + "[" + std::to_string(k) + "]", 0, 0xFFFFFFFF, x[k], e)) return e;

@@ -267,6 +267,22 @@ TEST(ImportErrors, NameFileLineAndElement) {
         {"e13.json", "{\"format\":\"spt-strokes\",\"version\":2,\"canvas\":{\"width\":10,\"height\":10},\"strokes\":[\n"
                      "{\"type\":\"curve\",\"color\":[1,2,3],\"points\":[[0,0]]}]}",
          "strokes[0].points[0] must be [x, y, width]"},
+        // Header tables and ROIs hold tuples of a fixed length.
+        {"e14.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":10,\"height\":10},\"frames\":[],\n"
+                     "\"sets\":[[4,4],[2]]}",
+         "e14.json:2: sets[1] must be [width, height]"},
+        {"e15.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":10,\"height\":10},\"frames\":[],\n"
+                     "\"orientations\":[[16384,0,0]]}",
+         "e15.json:2: orientations[0] must be [cos_q14, sin_q14]"},
+        {"e16.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":10,\"height\":10},\"frames\":[],\n"
+                     "\"rois\":[[0,0,1,1,2]]}",
+         "e16.json:2: rois[0] must be [first_frame, last_frame, x, y, w, h]"},
+        {"e17.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":10,\"height\":10},\"frames\":[],\n"
+                     "\"sets\":[]}",
+         "e17.json:2: sets must hold 1..16 entries"},
+        {"e18.json", "{\"format\":\"spt-strokes\",\"version\":1,\"canvas\":{\"width\":10,\"height\":10},\"frames\":[],\n"
+                     "\"orientations\":[]}",
+         "e18.json:2: orientations must hold 1..64 entries"},
     };
     for (const auto& c : cases) {
         auto d = import_text(c.name, c.text);
