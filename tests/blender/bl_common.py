@@ -41,6 +41,25 @@ def spt_works(spt, command):
     return r.returncode == 0 and "not implemented" not in (r.stdout + r.stderr)
 
 
+def stored_lists(spt, coded, back):
+    """`spt pack CODED --stored -o BACK`; returns BACK's live stroke lists (the add-on's reader)."""
+    import subprocess
+    from spt_grease_pencil.io import read_file
+    subprocess.run([spt, "pack", coded, "--stored", "-o", back], check=True)
+    return list(read_file(back).live_lists())
+
+
+def renders_identically(spt, a, b, frames):
+    """spt renders files a and b (paths) to the same PNG bytes, frame by frame (beside them)."""
+    import subprocess
+    for name in (a, b):
+        r = subprocess.run([spt, "render", name, "-o", name + ".####.png"], capture_output=True, text=True)
+        check(r.returncode == 0, f"spt render {name}: {r.stderr}")
+    for fi in range(frames):
+        with open(f"{a}.{fi:04d}.png", "rb") as fa, open(f"{b}.{fi:04d}.png", "rb") as fb:
+            check(fa.read() == fb.read(), f"frame {fi} of {b} renders as {a}")
+
+
 def reset_scene():
     bpy.ops.wm.read_factory_settings(use_empty=True)
 

@@ -44,17 +44,6 @@ def ordinal(s):
     return s.ordinal
 
 
-def renders_identically(a, b, frames):
-    """spt renders files a and b (paths) to the same PNG bytes, frame by frame."""
-    for name in (a, b):
-        r = subprocess.run([spt, "render", name, "-o", name + ".####.png"], capture_output=True, text=True)
-        C.check(r.returncode == 0, f"spt render {name}: {r.stderr}")
-    for fi in range(frames):
-        pa = open(f"{a}.{fi:04d}.png", "rb").read()
-        pb = open(f"{b}.{fi:04d}.png", "rb").read()
-        C.check(pa == pb, f"frame {fi} of {b} renders as {a}")
-
-
 # ------------------------------------------------------------------ structure after import
 scene = bpy.context.scene
 obj = import_(src)
@@ -100,9 +89,8 @@ if can_render:
     coded = os.path.join(work, "unedited.coded.spt")
     export_(obj, coded, stored=False)
     back = os.path.join(work, "unedited.back.spt")
-    subprocess.run([spt, "pack", coded, "--stored", "-o", back], check=True)
-    C.check(list(read_file(back).live_lists()) == orig_lists, "range-coded export: same stroke lists")
-    renders_identically(src, coded, len(orig_lists))
+    C.check(C.stored_lists(spt, coded, back) == orig_lists, "range-coded export: same stroke lists")
+    C.renders_identically(spt, src, coded, len(orig_lists))
     print("rendered frames compared with spt render")
 else:
     print("NOTE: spt render/pack not available; compared stroke lists only")
@@ -172,9 +160,8 @@ if media and os.path.isfile(json_in) and C.spt_works(spt, "import") and can_rend
     out = os.path.join(work, "rotellipses.back.spt")
     export_(gobj, out, stored=False)
     back = os.path.join(work, "rotellipses.back.stored.spt")
-    subprocess.run([spt, "pack", out, "--stored", "-o", back], check=True)
-    C.check(list(read_file(back).live_lists()) == ref, "geometrize import -> Blender -> export: same strokes")
-    renders_identically(geo, out, len(ref))
+    C.check(C.stored_lists(spt, out, back) == ref, "geometrize import -> Blender -> export: same strokes")
+    C.renders_identically(spt, geo, out, len(ref))
     print(f"geometrize rotated ellipses: {npoly} polygons of {len(ref[0])} strokes round-tripped")
 else:
     print("NOTE: no media or spt import: the geometrize case was skipped")
