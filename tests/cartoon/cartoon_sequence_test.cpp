@@ -3,11 +3,15 @@
 // frame renders close to its source, and the file verifies.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+
 #include <opencv2/imgproc.hpp>
 
 #include "converter/cli_test_util.hpp"
 #include "io/image_io.hpp"
 #include "spt/spt.hpp"
+#include "video/frame_source.hpp"
 
 namespace {
 
@@ -68,6 +72,40 @@ TEST(CartoonSequence, StillShapesAreKeptMovingOnesMoved) {
         const cv::Mat src = frame_art(int(i));
         double sse = 0;
         for (size_t p = 0; p < c.rgb.size(); ++p) sse += double((int(c.rgb[p]) - src.data[p]) * (int(c.rgb[p]) - src.data[p]));
+        const double psnr = 10 * std::log10(255.0 * 255.0 * double(c.rgb.size()) / std::max(sse, 1.0));
+        EXPECT_GE(psnr, 34.0) << "frame " << i;
+    }
+}
+
+// The butterfly clip painted from the .avi itself: the video's frames (rate 18), every frame
+// at the target against the decoded source, the file verifies.
+TEST(CartoonSequence, PaintsAVideoFileEndToEnd) {
+    const std::string clip = std::string(SPT_MEDIA_DIR) + "/video/butterfly-cartoon.avi";
+    if (!std::filesystem::exists(clip)) GTEST_FAIL() << "no shared media at " << clip;
+    TempDir dir;
+    const auto r = run_spt(dir, {"paint", clip, "-o", dir.file("b.spt"), "--style", "cartoon", "--frames", "0-2",
+                                 "--target-psnr", "34", "--progress", "none", "--threads", "2"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto v = run_spt(dir, {"verify", dir.file("b.spt")});
+    EXPECT_EQ(v.code, 0) << v.out << v.err;
+    auto rd = spt::Reader::open(dir.file("b.spt"));
+    ASSERT_TRUE(rd) << rd.error().message;
+    EXPECT_EQ((*rd)->info().header.fps, (spt::Rational{18, 1}));
+    ASSERT_EQ((*rd)->frames().size(), 3u);
+    auto src = spt::video::open_source(clip, "0-2", false);
+    ASSERT_TRUE(src) << src.error().message;
+    spt::video::SourceFrame frame;
+    for (size_t i = 0; i < 3; ++i) {
+        auto got = (*src)->next(frame);
+        ASSERT_TRUE(got && *got) << "frame " << i;
+        spt::Canvas c;
+        ASSERT_TRUE((*rd)->render_frame(i, c));
+        ASSERT_EQ(c.rgb.size(), frame.image.rgb.size());
+        double sse = 0;
+        for (size_t p = 0; p < c.rgb.size(); ++p) {
+            const double d = double(c.rgb[p]) - double(frame.image.rgb[p]);
+            sse += d * d;
+        }
         const double psnr = 10 * std::log10(255.0 * 255.0 * double(c.rgb.size()) / std::max(sse, 1.0));
         EXPECT_GE(psnr, 34.0) << "frame " << i;
     }
