@@ -7,6 +7,7 @@
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/frame_diff.hpp"
+#include "cartoon/motion_field.hpp"
 #include "spt/reader.hpp"
 #include "spt/writer.hpp"
 #include "video/frame_source.hpp"
@@ -14,24 +15,6 @@
 #include "video/video_paint.hpp"
 
 namespace spt::cartoon {
-
-namespace {
-
-// Where the source moved since the previous frame (any channel by more than 24 levels:
-// compressed video flickers where nothing moves; 6 and 24 kept the same stamps on the
-// butterfly clip, whose stamps go because polygons under them are redrawn).
-cv::Mat changed_mask(const io::Image& cur, const io::Image& prev) {
-    cv::Mat m(int(cur.height), int(cur.width), CV_8U, cv::Scalar(0));
-    for (size_t i = 0; i < size_t(cur.width) * cur.height; ++i)
-        for (int c = 0; c < 3; ++c)
-            if (std::abs(int(cur.rgb[3 * i + c]) - int(prev.rgb[3 * i + c])) > 24) {
-                m.data[i] = 255;
-                break;
-            }
-    return m;
-}
-
-}  // namespace
 
 Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -102,7 +85,23 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             since_key = 0;
         } else {
             f.type = FrameType::Inter;
-            FrameDiff d = diff_frame(live, fill.strokes, changed_mask(img, prev), **renderer);
+            const cv::Mat before(int(H), int(W), CV_8UC3, prev.rgb.data());
+            MotionChoice m = choose_motion(live, fill.strokes, rgb, before, **renderer, setup.header, opts.motion);
+            FrameDiff d = diff_frame(m.moved, fill.strokes, m.ground_still, **renderer, int(W), int(H));
+            if (!m.field.empty()) {
+                // The field pays only when it keeps more than it costs: a vector moves every
+                // stroke of its block, and what it moves wrongly is drawn again.
+                MotionOptions still = opts.motion;
+                still.enabled = false;
+                MotionChoice z = choose_motion(live, fill.strokes, rgb, before, **renderer, setup.header, still);
+                FrameDiff dz = diff_frame(z.moved, fill.strokes, z.ground_still, **renderer, int(W), int(H));
+                if (kept_value(live, dz.removed) >= kept_value(live, d.removed) - motion_cost(m.field)) {
+                    m = std::move(z);
+                    d = std::move(dz);
+                }
+            }
+            if (!m.field.empty()) ++rep.motion_frames;
+            f.motion = std::move(m.field);
             rep.polygons_kept += fill.strokes.size() - d.added.size();
             rep.polygons_added += d.added.size();
             rep.removed += d.removed.size();

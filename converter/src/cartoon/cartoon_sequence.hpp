@@ -1,7 +1,8 @@
 // `spt paint --style cartoon` for image sequences and videos. Each frame is traced to polygons
 // with the key frame's palette; an inter frame keeps every polygon that traced the same and
-// every stamp whose ground did not change (frame_diff.hpp), removes the rest, adds the new
-// polygons and paints stamps where the error is. No motion field yet: what moves is redrawn.
+// every stamp whose ground did not change (frame_diff.hpp), moves what reappears translated
+// (motion_field.hpp), removes the rest, adds the new polygons and paints stamps where the
+// error is.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "cartoon/fill_layer.hpp"
+#include "cartoon/motion_field.hpp"
 #include "paint/painter.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
@@ -25,11 +27,12 @@ struct SequenceOptions {
     Rgb8 background{255, 255, 255};
     bool stored = false;
     FillOptions fill;
+    MotionOptions motion;
     std::vector<std::pair<std::string, std::string>> metadata;
 };
 
 struct SequenceReport {
-    uint64_t frames = 0, key_frames = 0, bytes = 0;
+    uint64_t frames = 0, key_frames = 0, motion_frames = 0, bytes = 0;
     uint64_t polygons_added = 0, polygons_kept = 0, stamps_added = 0, removed = 0;
     double mean_psnr = 0, min_psnr = 99, seconds = 0;
 };

@@ -22,11 +22,11 @@ struct FrameDiff {
     std::vector<cv::Rect> added_boxes;
 };
 
-// `old_live`: the previous frame's live list (polygons and stamps). Old stamps stay where no
-// added polygon touches them and the source under them did not change (`changed`: CV_8U,
-// non-zero where the source differs from the previous frame), else they go.
-FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stroke>& polygons, const cv::Mat& changed,
-                     const Renderer& renderer);
+// `old_live`: the previous frame's live list (polygons and stamps), after this frame's move
+// (motion_field.hpp). Old stamps stay where no added polygon touches them and the source under
+// them did not change, or moved with them (`ground_still`, per old stroke), else they go.
+FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stroke>& polygons,
+                     const std::vector<char>& ground_still, const Renderer& renderer, int canvas_w, int canvas_h);
 
 // The pixels a stroke may touch (polygon and stamp strokes; others: the whole canvas).
 cv::Rect stroke_box(const Stroke& s, const Renderer& renderer, int canvas_w, int canvas_h);

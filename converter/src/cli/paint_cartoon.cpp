@@ -159,9 +159,10 @@ int paint_cartoon_sequence(const PaintCommandOptions& o) {
     if (Status st = cartoon::paint_sequence(s, r); !st) return fail(st.error().message);
     if (o.progress != io::ProgressMode::None)
         std::fprintf(stderr,
-                     "spt paint: %s: %llu frames (%llu key), polygons %llu added %llu kept, %llu stamps, %llu removed; "
+                     "spt paint: %s: %llu frames (%llu key, %llu with motion), polygons %llu added %llu kept, %llu stamps, %llu removed; "
                      "PSNR mean %.2f dB min %.2f; %llu bytes, %.2f s (%.3f s a frame)\n",
                      o.output.c_str(), (unsigned long long)r.frames, (unsigned long long)r.key_frames,
+                     (unsigned long long)r.motion_frames,
                      (unsigned long long)r.polygons_added, (unsigned long long)r.polygons_kept,
                      (unsigned long long)r.stamps_added, (unsigned long long)r.removed, r.mean_psnr, r.min_psnr,
                      (unsigned long long)r.bytes, r.seconds, r.frames ? r.seconds / double(r.frames) : 0.0);
