@@ -28,7 +28,8 @@ public:
         // A cut within a..b differs from what precedes it by at least the floors; the frames on
         // either side of it move less than the rest of the floors in a few frames (the mean
         // absolute difference obeys the triangle inequality), so the span's change stays above
-        // `loose` times the floors. Spans below cannot hold a cut and are skipped unread.
+        // `loose` times the floors (the edge ratio obeys no such inequality: its margin is
+        // measured, README.md). Spans below are taken to hold no cut and are skipped unread.
         if (c.pixel_diff < o_.loose * o_.detector.min_pixel_diff || c.edge_diff < o_.loose * o_.detector.min_edge_diff)
             return {};
         const size_t m = a + (b - a) / 2;
