@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "io/image_io.hpp"
+#include "io/sequence.hpp"
 #include "plan/gray_frames.hpp"
 #include "video/frame_source.hpp"
 
@@ -22,6 +23,12 @@ void expect_same_gray(const std::string& pattern, int frames, int threads, const
     ASSERT_TRUE(fast.ok()) << fast.error().message;
     auto slow = spt::video::open_source(pattern, range, false);
     ASSERT_TRUE(slow.ok()) << slow.error().message;
+    // The sampled cut scan reads the same files by position (open_gray_frame_files).
+    auto by_pos = spt::plan::open_gray_frame_files(pattern, range);
+    ASSERT_TRUE(by_pos.ok()) << by_pos.error().message;
+    const bool video = spt::io::is_video_file(pattern);
+    ASSERT_EQ(bool(*by_pos), !video) << pattern << ": sequences read by position, videos in order";
+    if (!video) EXPECT_EQ((*by_pos)->count(), size_t(frames));
     int n = 0;
     for (;; ++n) {
         long number = -1;
@@ -38,6 +45,12 @@ void expect_same_gray(const std::string& pattern, int frames, int threads, const
         cv::cvtColor(rgb, want, cv::COLOR_RGB2GRAY);
         ASSERT_EQ(g.size(), want.size());
         EXPECT_EQ(cv::countNonZero(g != want), 0) << pattern << " frame " << number << ", " << threads << " threads";
+        if (video) continue;
+        EXPECT_EQ(number, (*by_pos)->first() + n);
+        const auto at = (*by_pos)->read(size_t(n));
+        ASSERT_TRUE(at.problem.empty()) << at.problem;
+        ASSERT_EQ(at.gray.size(), want.size());
+        EXPECT_EQ(cv::countNonZero(at.gray != want), 0) << pattern << " frame " << number << " by position";
     }
     EXPECT_EQ(n, frames);
 }

@@ -35,6 +35,9 @@ int cmd_plan(int argc, char** argv) {
     po.cut_threshold = o.cut_threshold;
     po.keyframe_interval = o.keyframe_interval;
     po.max_task_frames = o.max_task_frames;
+    po.cut_scan_full = o.cut_scan_full;
+    po.cut_step = o.cut_step;
+    po.cut_history = o.cut_history;
     po.seed = o.paint.seed;
     po.paint_args = paint_args(o);
     po.spt_version = library_version();
@@ -51,9 +54,11 @@ int cmd_plan(int argc, char** argv) {
         std::fprintf(stderr, "spt plan: %s\n", st.error().message.c_str());
         return 1;
     }
-    char detail[256];
-    std::snprintf(detail, sizeof detail, "%llu frames %ld-%ld, %zu cuts, %zu shots, plan %s, %.2f s (%.2f ms a frame)",
-                  (unsigned long long)stats.frames, p->first, p->last, p->cuts.size() - 1, p->shots.size(),
+    char detail[320];
+    std::snprintf(detail, sizeof detail,
+                  "%llu frames %ld-%ld (%llu read, %s cut scan), %zu cuts, %zu shots, plan %s, %.2f s (%.2f ms a frame)",
+                  (unsigned long long)stats.frames, p->first, p->last, (unsigned long long)stats.decoded,
+                  p->cut_scan.c_str(), p->cuts.size() - 1, p->shots.size(),
                   p->id.c_str(), stats.seconds, stats.frames ? 1000.0 * stats.seconds / double(stats.frames) : 0.0);
     progress.finish(true, detail);
     if (o.progress != io::ProgressMode::Json) std::fprintf(stderr, "spt plan: %s: %s\n", o.output.c_str(), detail);

@@ -236,8 +236,30 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
         a.group("farm plan")
             .option("max-task-frames", "N", "split shots longer than N frames into tasks of at most N, at forced key "
                                             "frames (whole --keyframe-interval steps when one fits); 0 = at cuts only",
-                    0, "240");
+                    0, "240")
+            .option("cut-scan", "MODE", "sampled: judge frame pairs only where frames sampled every --cut-step "
+                                        "frames show a change a cut can hide in; full: judge every pair (reads every frame)",
+                    0, "sampled")
+            .option("cut-step", "K", "the sampled cut scan's step (frames)", 0, "16")
+            .option("cut-history", "N", "the sampled cut scan weighs a pair against the N pairs before it (1..12; "
+                                        "12 is the full scan's own rule, and reads more frames)",
+                    0, "4");
     if (int rc = a.parse(argc, argv); rc >= 0) return rc;
+    if (plan && a.has("cut-scan")) {
+        const std::string m = a.get("cut-scan");
+        if (m != "full" && m != "sampled") return a.usage_error("--cut-scan: expected full or sampled, got '" + m + "'");
+        o.cut_scan_full = m == "full";
+    }
+    if (plan && a.has("cut-step")) {
+        long k = 0;
+        if (!a.get_long("cut-step", k, 1, 1000000)) return 2;
+        o.cut_step = int(k);
+    }
+    if (plan && a.has("cut-history")) {
+        long h = 0;
+        if (!a.get_long("cut-history", h, 1, 12)) return 2;
+        o.cut_history = int(h);
+    }
     if (plan && a.has("max-task-frames")) {
         long m = 0;
         if (!a.get_long("max-task-frames", m, 0, 100000000)) return 2;

@@ -201,28 +201,73 @@ private:
     std::unique_ptr<Prefetch> ahead_;  // last: its threads stop before the members they read go
 };
 
+// The files of a sequence pattern and the numbers the painter's SequenceSource walks
+// (video/frame_source.cpp).
+struct SequenceListing {
+    std::vector<long> numbers;
+    std::map<long, std::string> files;
+};
+
+Result<SequenceListing> list_numbers(const std::string& input, const std::string& frames) {
+    Result<io::FrameRange> range = io::parse_frame_range(frames);
+    if (!range) return range.error();
+    Result<std::vector<io::SequenceFile>> files = io::list_sequence(input, *range);
+    if (!files) return files.error();
+    if (files->empty()) return make_error(Code::IoError, input + ": no frames found");
+    SequenceListing l;
+    for (const auto& f : *files) l.files.emplace(f.frame, f.path);
+    long first = l.files.begin()->first, last = l.files.rbegin()->first;
+    if (!range->empty()) {
+        first = range->spans.front().first, last = range->spans.front().second;
+        for (const auto& s : range->spans) first = std::min(first, s.first), last = std::max(last, s.second);
+    }
+    l.numbers = range->frames_within(first, last, 10'000'000);
+    return l;
+}
+
+class SequenceFiles final : public GrayFrameFiles {
+public:
+    SequenceFiles(std::string pattern, SequenceListing l) : pattern_(std::move(pattern)), l_(std::move(l)) {}
+    size_t count() const override { return l_.numbers.size(); }
+    long first() const override { return l_.numbers.front(); }
+    Frame read(size_t pos) const override {
+        thread_local Scratch sc;
+        const long n = l_.numbers[pos];
+        auto f = l_.files.find(n);
+        GrayFile g = read_gray_file(pattern_, n, f == l_.files.end() ? nullptr : &f->second, sc);
+        return Frame{std::move(g.gray), std::move(g.problem)};
+    }
+    std::string path(size_t pos) const override {
+        auto f = l_.files.find(l_.numbers[pos]);
+        return f == l_.files.end() ? pattern_ : f->second;
+    }
+    std::string describe() const override { return pattern_; }
+
+private:
+    std::string pattern_;
+    SequenceListing l_;
+};
+
 }  // namespace
+
+Result<std::unique_ptr<GrayFrameFiles>> open_gray_frame_files(const std::string& input, const std::string& frames) {
+    if (!io::is_sequence_pattern(input) || io::is_video_file(input)) return std::unique_ptr<GrayFrameFiles>();
+    Result<SequenceListing> l = list_numbers(input, frames);
+    if (!l) return l.error();
+    // Random access needs consecutive numbers; other ranges are refused by the planner anyway.
+    for (size_t i = 1; i < l->numbers.size(); ++i)
+        if (l->numbers[i] != l->numbers[i - 1] + 1) return std::unique_ptr<GrayFrameFiles>();
+    return std::unique_ptr<GrayFrameFiles>(std::make_unique<SequenceFiles>(input, std::move(*l)));
+}
 
 Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, const std::string& frames,
                                                      bool skip_bad_frames, int threads) {
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
     if (io::is_sequence_pattern(input) && !io::is_video_file(input)) {
-        Result<io::FrameRange> range = io::parse_frame_range(frames);
-        if (!range) return range.error();
-        Result<std::vector<io::SequenceFile>> files = io::list_sequence(input, *range);
-        if (!files) return files.error();
-        if (files->empty()) return make_error(Code::IoError, input + ": no frames found");
-        std::map<long, std::string> by_number;
-        for (const auto& f : *files) by_number.emplace(f.frame, f.path);
-        // The numbers the painter's SequenceSource walks (video/frame_source.cpp).
-        long first = by_number.begin()->first, last = by_number.rbegin()->first;
-        if (!range->empty()) {
-            first = range->spans.front().first, last = range->spans.front().second;
-            for (const auto& s : range->spans) first = std::min(first, s.first), last = std::max(last, s.second);
-        }
-        std::vector<long> numbers = range->frames_within(first, last, 10'000'000);
-        return std::unique_ptr<GrayFrames>(
-            std::make_unique<SequenceGray>(input, std::move(numbers), std::move(by_number), skip_bad_frames, threads));
+        Result<SequenceListing> l = list_numbers(input, frames);
+        if (!l) return l.error();
+        return std::unique_ptr<GrayFrames>(std::make_unique<SequenceGray>(input, std::move(l->numbers), std::move(l->files),
+                                                                         skip_bad_frames, threads));
     }
     if (io::is_video_file(input)) {
         Result<io::FrameRange> range = io::parse_frame_range(frames);

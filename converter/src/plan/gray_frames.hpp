@@ -26,6 +26,28 @@ public:
     virtual std::string describe() const = 0;
 };
 
+// A sequence's frames by position (0 .. count-1, consecutive source numbers from `first`),
+// for the sampled cut scan, which reads some frames only. `read` is safe to call on several
+// threads at once and gives next()'s gray of a good frame; a bad frame (missing, unreadable,
+// another size) is `problem`, and the caller decides whether to skip it.
+class GrayFrameFiles {
+public:
+    struct Frame {
+        cv::Mat gray;
+        std::string problem;
+    };
+    virtual ~GrayFrameFiles() = default;
+    virtual size_t count() const = 0;
+    virtual long first() const = 0;
+    virtual Frame read(size_t pos) const = 0;
+    virtual std::string path(size_t pos) const = 0;  // the file of a present frame
+    virtual std::string describe() const = 0;
+};
+
+// The sequence `input` (a pattern, not a video) by position; nullptr (no error) for inputs that
+// only read in order (videos, folders), which the scan then reads through open_gray_frames.
+Result<std::unique_ptr<GrayFrameFiles>> open_gray_frame_files(const std::string& input, const std::string& frames);
+
 // `threads`: files of a sequence decode on this many threads (0: every core), in order; the
 // frames are the same for any count.
 Result<std::unique_ptr<GrayFrames>> open_gray_frames(const std::string& input, const std::string& frames,

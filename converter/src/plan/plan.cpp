@@ -23,6 +23,8 @@ void write_body(io::JsonWriter& j, const Plan& p, bool with_id) {
     j.key("canvas").obj().kv("width", p.width).kv("height", p.height).end();
     j.kv("fps", p.fps).kv("seed", std::to_string(p.seed));
     j.kv("keyframe_interval", p.keyframe_interval).kv("max_task_frames", int64_t(p.max_task_frames));
+    if (!p.cut_scan.empty())
+        j.kv("cut_scan", p.cut_scan).kv("cut_step", p.cut_step).kv("cut_history", p.cut_history);
     j.key("cuts").arr();
     for (long c : p.cuts) j.integer(c);
     j.end().key("paint_args").arr();
@@ -132,6 +134,16 @@ Result<Plan> parse_plan(const std::string& text, const std::string& src) {
     long kfi = 0;
     if (f.integer(root, "keyframe_interval", 1, 1000000, kfi)) p.keyframe_interval = int(kfi);
     f.integer(root, "max_task_frames", 0, 0x7FFFFFFF, p.max_task_frames);
+    // Added within version 1: plans written before them scanned every frame.
+    if (root.find("cut_scan")) {
+        f.text(root, "cut_scan", p.cut_scan);
+        long step = 1;
+        if (f.integer(root, "cut_step", 1, 1000000, step)) p.cut_step = int(step);
+        long hist = 0;
+        if (f.integer(root, "cut_history", 0, 1000000, hist)) p.cut_history = int(hist);
+        if (f.err.empty() && p.cut_scan != "full" && p.cut_scan != "sampled")
+            return make_error(Code::InvalidArgument, src + ": \"cut_scan\" must be \"full\" or \"sampled\"");
+    }
     if (const json::Value* c = f.need(root, "cuts", json::Type::Array))
         for (const json::Value& x : c->items) {
             if (!x.is_number()) return make_error(Code::InvalidArgument, f.at(x) + "\"cuts\" holds frame numbers");

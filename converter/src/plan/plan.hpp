@@ -33,6 +33,11 @@ struct Plan {
     int keyframe_interval = 100;
     long max_task_frames = 0;       // 0: shots are never split
     std::vector<long> cuts;         // source numbers that start a shot (the first frame too)
+    // How the cuts were found: "full" (every frame) or "sampled" every cut_step frames with
+    // verdicts on cut_history pairs (1 and 0 for "full"); "" in plans written before these members (not written back: the id stays).
+    std::string cut_scan;
+    int cut_step = 1;
+    int cut_history = 0;            // the sampled scan's verdict history (0 for "full")
     std::vector<std::string> paint_args;  // spt paint options every task passes (README.md)
     std::vector<Shot> shots;
     uint64_t frames() const { return last >= first ? uint64_t(last - first + 1) : 0; }

@@ -1,12 +1,15 @@
 #include "plan/planner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 
 #include <opencv2/imgproc.hpp>
 
 #include "io/sequence.hpp"
+#include "plan/cut_frame_stores.hpp"
 #include "plan/gray_frames.hpp"
+#include "plan/sampled_cuts.hpp"
 #include "video/cut_detect.hpp"
 #include "video/video_encoder.hpp"
 #include "video/video_paint.hpp"
@@ -22,10 +25,6 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
     if (!range->empty() && (range->spans.size() != 1 || range->step(0) != 1))
         return make_error(Code::InvalidArgument, "--frames: a plan takes one range A-B of consecutive frames, got '" +
                                                      o.frames + "'");
-    Result<std::unique_ptr<GrayFrames>> src = open_gray_frames(o.input, o.frames, o.skip_bad_frames, o.threads);
-    if (!src) return src.error();
-    GrayFrames& source = **src;
-
     Plan p;
     p.spt_version = o.spt_version;
     std::error_code ec;
@@ -35,46 +34,102 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
     p.keyframe_interval = o.keyframe_interval;
     p.max_task_frames = o.max_task_frames;
     p.paint_args = o.paint_args;
-    Rational fps{24, 1};
-    if (!o.fps.empty()) {
-        Result<Rational> f = video::parse_fps(o.fps);
-        if (!f) return f.error();
-        fps = *f;
-    } else if (source.has_fps()) {
-        fps = source.fps();
-    }
-    p.fps = std::to_string(fps.num) + "/" + std::to_string(fps.den);
+    // The frame rate: --fps, else the container's, else 24.
+    auto set_fps = [&](bool has, Rational container) -> Status {
+        Rational fps{24, 1};
+        if (!o.fps.empty()) {
+            Result<Rational> f = video::parse_fps(o.fps);
+            if (!f) return f.error();
+            fps = *f;
+        } else if (has) {
+            fps = container;
+        }
+        p.fps = std::to_string(fps.num) + "/" + std::to_string(fps.den);
+        return {};
+    };
+
 
     video::CutOptions co;
     co.factor = o.cut_threshold;
     co.window = o.cut_window;
-    video::CutDetector cuts(co);
-    progress.set_total(double(source.expected_frames()));
-    cv::Mat gray;
-    long number = 0, prev = -1;
-    uint64_t n = 0;
-    for (;;) {
-        Result<bool> got = source.next(number, gray);
-        if (!got) return got.error();
-        if (!*got) break;
-        if (prev >= 0 && number != prev + 1)
-            return make_error(Code::InvalidArgument, source.describe() + ": frame " + std::to_string(number) +
-                                                         " follows frame " + std::to_string(prev) +
-                                                         ": a plan needs consecutive frame numbers");
-        if (n == 0) {
-            p.first = number;
-            p.width = uint32_t(gray.cols);
-            p.height = uint32_t(gray.rows);
+    uint64_t n = 0, decoded = 0;
+    if (o.cut_scan_full) {
+        p.cut_scan = "full";
+        p.cut_step = 1;
+        p.cut_history = 0;
+        Result<std::unique_ptr<GrayFrames>> src = open_gray_frames(o.input, o.frames, o.skip_bad_frames, o.threads);
+        if (!src) return src.error();
+        GrayFrames& source = **src;
+        if (Status st = set_fps(source.has_fps(), source.has_fps() ? source.fps() : Rational{}); !st) return st.error();
+        video::CutDetector cuts(co);
+        progress.set_total(double(source.expected_frames()));
+        cv::Mat gray;
+        long number = 0, prev = -1;
+        for (;;) {
+            Result<bool> got = source.next(number, gray);
+            if (!got) return got.error();
+            if (!*got) break;
+            if (prev >= 0 && number != prev + 1)
+                return make_error(Code::InvalidArgument, source.describe() + ": frame " + std::to_string(number) +
+                                                             " follows frame " + std::to_string(prev) +
+                                                             ": a plan needs consecutive frame numbers");
+            if (n == 0) {
+                p.first = number;
+                p.width = uint32_t(gray.cols);
+                p.height = uint32_t(gray.rows);
+            }
+            // The painter's detector on the painter's gray (video_encoder.cpp add_frame).
+            const video::CutScore s = cuts.push(gray);
+            if (n == 0 || s.cut) p.cuts.push_back(number);
+            prev = number;
+            ++n;
+            progress.update(double(n), "frame " + std::to_string(number));
         }
-        // The painter's detector on the painter's gray (video_encoder.cpp add_frame).
-        const video::CutScore s = cuts.push(gray);
-        if (n == 0 || s.cut) p.cuts.push_back(number);
-        prev = number;
-        ++n;
-        progress.update(double(n), "frame " + std::to_string(number));
+        if (n == 0) return make_error(Code::IoError, source.describe() + ": no frames to plan");
+        p.last = prev;
+        decoded = n;
+    } else {
+        p.cut_scan = "sampled";
+        p.cut_step = std::max(1, o.cut_step);
+        SampledCutOptions so;
+        so.detector = co;
+        so.step = p.cut_step;
+        so.history = std::clamp(o.cut_history, 1, std::max(2, o.cut_window));
+        p.cut_history = so.history;
+        Result<std::unique_ptr<GrayFrameFiles>> files = open_gray_frame_files(o.input, o.frames);
+        if (!files) return files.error();
+        std::unique_ptr<PlanCutFrames> frames;
+        std::string what;
+        if (*files) {
+            what = (*files)->describe();
+            progress.set_total(double((*files)->count()));
+            if (Status st = set_fps(false, {}); !st) return st.error();
+            frames = cut_frames_of_files(std::move(*files), so, o.skip_bad_frames, o.threads);
+        } else {
+            Result<std::unique_ptr<GrayFrames>> src = open_gray_frames(o.input, o.frames, o.skip_bad_frames, o.threads);
+            if (!src) return src.error();
+            what = (*src)->describe();
+            progress.set_total(double((*src)->expected_frames()));
+            if (Status st = set_fps((*src)->has_fps(), (*src)->has_fps() ? (*src)->fps() : Rational{}); !st)
+                return st.error();
+            frames = cut_frames_in_order(std::move(*src), so);
+        }
+        Result<const video::CutFrame*> f0 = frames->at(0);
+        if (!f0) return f0.error();
+        if (!*f0) return make_error(Code::IoError, what + ": no frames to plan");
+        Result<std::vector<size_t>> cuts = sampled_cuts(*frames, frames->first_number(), so, [&](size_t pos) {
+            progress.update(double(pos + 1), "frame " + std::to_string(frames->first_number() + long(pos)));
+        });
+        if (!cuts) return cuts.error();
+        n = frames->count();
+        decoded = frames->decoded();
+        p.first = frames->first_number();
+        p.last = p.first + long(n) - 1;
+        p.width = uint32_t(frames->width());
+        p.height = uint32_t(frames->height());
+        p.cuts.push_back(p.first);
+        for (size_t c : *cuts) p.cuts.push_back(p.first + long(c));
     }
-    if (n == 0) return make_error(Code::IoError, source.describe() + ": no frames to plan");
-    p.last = prev;
 
     for (size_t c = 0; c < p.cuts.size(); ++c) {
         const long a = p.cuts[c], b = c + 1 < p.cuts.size() ? p.cuts[c + 1] - 1 : p.last;
@@ -93,6 +148,7 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
     p.id = compute_id(p);
     if (stats) {
         stats->frames = n;
+        stats->decoded = decoded;
         stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     return p;

@@ -1,5 +1,5 @@
-// `spt plan`'s pass over the input: every frame read once, the cut detector of the video
-// painter run on it, and the shots split into balanced tasks at forced key frames.
+// `spt plan`'s pass over the input: the cut detector of the video painter run on every frame
+// or on the frames the sampled scan asks for (README.md "Cut scan"), and the shots split into balanced tasks at forced key frames.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +20,9 @@ struct PlanOptions {
     int threads = 0;                 // decoding threads (0: every core); the plan never depends on it
     double cut_threshold = 6.0;      // the video painter's (VideoPaintOptions)
     int cut_window = 12;
+    bool cut_scan_full = false;      // true: judge every frame pair; false: the sampled scan
+    int cut_step = 16;               // the sampled scan's step (README.md "Cut scan")
+    int cut_history = 4;             // the pairs its verdicts weigh a pair against
     int keyframe_interval = 100;
     long max_task_frames = 240;
     uint64_t seed = 1;
@@ -30,6 +33,7 @@ struct PlanOptions {
 struct PlanStats {
     double seconds = 0;              // the whole pass
     uint64_t frames = 0;
+    uint64_t decoded = 0;            // frames read and analysed (all of them in a full scan)
 };
 
 Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* stats = nullptr);

@@ -17,8 +17,8 @@ struct CutOptions {
     // needs at least this mean intensity change (0..255) and this edge change ratio (0..1).
     double min_pixel_diff = 8.0;
     double min_edge_diff = 0.30;
-    int analysis_width = 160;
-    int min_history = 2;       // frames after a cut (or the start) before the next can be called  // frames are analysed at this width (aspect kept)
+    int analysis_width = 160;  // frames are analysed at this width (aspect kept)
+    int min_history = 2;       // frames after a cut (or the start) before the next can be called
 };
 
 struct CutScore {
@@ -28,6 +28,24 @@ struct CutScore {
     double threshold = 0;
     bool cut = false;
 };
+
+// One frame as the detector sees it: a small blurred copy, its edges, and the edges dilated.
+struct CutFrame {
+    cv::Mat small, edges, wide;
+};
+CutFrame analyse_cut_frame(const cv::Mat& gray, const CutOptions& opts);
+
+// The change from `before` to `after` (any two frames of one input, consecutive or not):
+// pixel_diff and edge_diff of a CutScore.
+struct CutChange {
+    double pixel_diff = 0, edge_diff = 0;
+};
+CutChange cut_change(const CutFrame& before, const CutFrame& after);
+
+// The verdict on a consecutive pair given the products of the non-cut frames before it since
+// the last cut (the last `window` of them, oldest first): CutDetector's rule, shared with the
+// plan's sampled scan.
+CutScore judge_cut(const CutChange& change, const std::deque<double>& history, const CutOptions& opts);
 
 class CutDetector {
 public:
