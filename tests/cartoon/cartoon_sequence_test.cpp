@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <opencv2/imgproc.hpp>
@@ -109,6 +110,58 @@ TEST(CartoonSequence, PaintsAVideoFileEndToEnd) {
         const double psnr = 10 * std::log10(255.0 * 255.0 * double(c.rgb.size()) / std::max(sse, 1.0));
         EXPECT_GE(psnr, 34.0) << "frame " << i;
     }
+}
+
+}  // namespace
+
+namespace {
+
+// --target-bytes on a sequence: the whole painting lands at or under the budget (the search ran:
+// not far under it), its metadata records the PSNR target chosen, no trial file is left, and a
+// budget below the smallest painting is said, not silently missed.
+TEST(CartoonSequence, TargetBytesLandsAtOrBelowTheBudget) {
+    TempDir dir;
+    for (int i = 0; i < 8; ++i) {
+        const cv::Mat f = frame_art(i);
+        char name[32];
+        std::snprintf(name, sizeof name, "f.%04d.png", i);
+        ASSERT_TRUE(spt::io::write_image(dir.file(name), uint32_t(f.cols), uint32_t(f.rows), f.data));
+    }
+    const auto high = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("high.spt"), "--style", "cartoon",
+                                    "--target-psnr", "44", "--progress", "none"});
+    ASSERT_EQ(high.code, 0) << high.err;
+    const uint64_t budget = std::filesystem::file_size(dir.file("high.spt")) * 3 / 4;
+    const std::string out = dir.file("budget.spt");
+    const auto r = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", out, "--style", "cartoon", "--target-bytes",
+                                 std::to_string(budget), "--progress", "none"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_LE(std::filesystem::file_size(out), budget);
+    EXPECT_GE(std::filesystem::file_size(out), budget / 2) << "far below the budget: the search did not run";
+    EXPECT_EQ(run_spt(dir, {"verify", out}).code, 0);
+    auto rd = spt::Reader::open(out);
+    ASSERT_TRUE(rd) << rd.error().message;
+    std::string options;
+    for (const auto& [k, v] : (*rd)->info().metadata)
+        if (k == "painter.options") options = v;
+    EXPECT_NE(options.find("target-psnr="), std::string::npos) << options;
+    EXPECT_EQ(options.find("target-psnr=44"), std::string::npos) << "the chosen target is recorded: " << options;
+    std::string left;  // beyond the frames, the two paintings and run_spt's .stdout/.stderr
+    for (const auto& name : dir.names())
+        if (!name.ends_with(".png") && name != "high.spt" && name != "budget.spt" && name != ".stdout" && name != ".stderr")
+            left += name + " ";
+    EXPECT_EQ(left, "") << "a trial file was left beside the output";
+
+    const auto tiny = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("tiny.spt"), "--style", "cartoon",
+                                    "--target-bytes", "64", "--progress", "none"});
+    EXPECT_EQ(tiny.code, 0) << tiny.err;
+    EXPECT_NE(tiny.err.find("below the smallest cartoon painting"), std::string::npos) << tiny.err;
+
+    // N/s: 8 frames at 24 fps are a third of a second, so 3 x budget a second is the same budget.
+    const std::string rate = dir.file("rate.spt");
+    const auto rs = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", rate, "--style", "cartoon", "--target-bytes",
+                                  std::to_string(budget * 3) + "/s", "--progress", "none"});
+    ASSERT_EQ(rs.code, 0) << rs.err;
+    EXPECT_EQ(spt_test::slurp(rate), spt_test::slurp(out));
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     paint::PaintSetup setup = paint::make_setup(W, H, opts.background, paint::default_sets(W, H, opts.sets),
                                                 opts.templates.empty() ? paint::default_templates() : opts.templates);
     setup.header.fps = fps;
+    rep.fps = fps;
     setup.header.frame_count = kUnknownFrameCount;
     auto renderer = Renderer::create(setup.header, setup.templates);
     if (!renderer) return renderer.error();
@@ -47,6 +48,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     info.metadata = opts.metadata;
     WriterOptions wo;
     wo.coding = opts.stored ? Coding::Stored : Coding::Range;
+    wo.atomic_rename = opts.atomic_rename;
     auto writer = Writer::create(opts.output, info, wo);
     if (!writer) return writer.error();
 

@@ -26,6 +26,8 @@ struct SequenceOptions {
     std::vector<Template> templates;    // empty: the built-in set
     Rgb8 background{255, 255, 255};
     bool stored = false;
+    // false when `output` is a rate search's trial file (io/trial_output.hpp), written in place
+    bool atomic_rename = true;
     FillOptions fill;
     MotionOptions motion;
     std::vector<std::pair<std::string, std::string>> metadata;
@@ -35,6 +37,7 @@ struct SequenceReport {
     uint64_t frames = 0, key_frames = 0, motion_frames = 0, bytes = 0;
     uint64_t polygons_added = 0, polygons_kept = 0, stamps_added = 0, removed = 0;
     double mean_psnr = 0, min_psnr = 99, seconds = 0;
+    Rational fps{24, 1};  // the file's frame rate
 };
 
 Status paint_sequence(const SequenceOptions& opts, SequenceReport& report);

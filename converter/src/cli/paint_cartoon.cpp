@@ -1,5 +1,6 @@
 #include "cli/paint_cartoon.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -128,8 +129,56 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
     return 0;
 }
 
+// The file's metadata; painter.options records the PSNR target a --target-bytes search chose.
+std::vector<std::pair<std::string, std::string>> sequence_metadata(const PaintCommandOptions& o, double target_psnr) {
+    PaintCommandOptions meta = o;
+    meta.paint.target_psnr = target_psnr;
+    return {{"software", std::string("spt ") + library_version()},
+            {"source", std::filesystem::path(o.input).filename().string()},
+            {"painter.seed", std::to_string(o.paint.seed)},
+            {"painter.options", meta.canonical()}};
+}
+
+// --target-bytes for a sequence: bisection on the PSNR target, each trial the whole sequence
+// painted to a trial file that has no name (io/trial_output.hpp), as for a still; the cost is
+// one painting per step, said on stderr as it goes.
+Result<double> search_sequence_psnr(const PaintCommandOptions& o, cartoon::SequenceOptions s) {
+    auto trial = io::TrialOutput::create(o.output);
+    if (!trial) return trial.error();
+    s.output = trial->path();
+    s.atomic_rename = false;
+    double lo = 15, hi = 60, best = 0;
+    uint64_t smallest = UINT64_MAX;
+    constexpr int kSteps = 7;  // 45 dB / 2^7: the target within 0.4 dB
+    for (int i = 0; i < kSteps; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        s.paint.target_psnr = mid;
+        s.metadata = sequence_metadata(o, mid);  // its bytes count too
+        cartoon::SequenceReport r;
+        if (Status st = cartoon::paint_sequence(s, r); !st) {
+            Error e = st.error();
+            e.message = trial->explain(e.message);
+            return e;
+        }
+        if (o.progress != io::ProgressMode::None)
+            std::fprintf(stderr, "spt paint: --target-bytes %llu: trial %d/%d at %.2f dB: %llu bytes\n",
+                         (unsigned long long)o.target_bytes, i + 1, kSteps, mid, (unsigned long long)r.bytes);
+        // N/s: the budget of the clip's length (frames / fps) at N bytes a second
+        const double budget = o.target_bytes_per_second
+                                  ? double(o.target_bytes) * double(r.frames) * r.fps.den / std::max<uint32_t>(1, r.fps.num)
+                                  : double(o.target_bytes);
+        if (double(r.bytes) <= budget) { best = mid; lo = mid; } else { hi = mid; }
+        smallest = std::min(smallest, r.bytes);
+    }
+    if (best == 0)
+        std::fprintf(stderr, "spt paint: warning: --target-bytes %llu is below the smallest cartoon painting (%llu bytes); painting that\n",
+                     (unsigned long long)o.target_bytes, (unsigned long long)smallest);
+    const double psnr = best > 0 ? best : lo;
+    std::fprintf(stderr, "spt paint: --target-bytes %llu: --target-psnr %.2f\n", (unsigned long long)o.target_bytes, psnr);
+    return psnr;
+}
+
 int paint_cartoon_sequence(const PaintCommandOptions& o) {
-    if (o.target_bytes > 0) return fail("--style cartoon: --target-bytes is for still images only yet; use --target-psnr");
     if (!o.preview.empty()) return fail("--preview is for still images; render a sequence with 'spt render'");
     cartoon::SequenceOptions s;
     s.input = o.input;
@@ -151,10 +200,12 @@ int paint_cartoon_sequence(const PaintCommandOptions& o) {
         if (!t) return fail(t.error().message);
         s.templates = std::move(t.value());
     }
-    s.metadata = {{"software", std::string("spt ") + library_version()},
-                  {"source", std::filesystem::path(o.input).filename().string()},
-                  {"painter.seed", std::to_string(o.paint.seed)},
-                  {"painter.options", o.canonical()}};
+    if (o.target_bytes > 0) {
+        auto psnr = search_sequence_psnr(o, s);
+        if (!psnr) return fail(psnr.error().message);
+        s.paint.target_psnr = *psnr;
+    }
+    s.metadata = sequence_metadata(o, s.paint.target_psnr);
     cartoon::SequenceReport r;
     if (Status st = cartoon::paint_sequence(s, r); !st) return fail(st.error().message);
     if (o.progress != io::ProgressMode::None)
