@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cartoon/cartoon_sequence.hpp"
+#include "cartoon/cartoon_test_util.hpp"
 #include "converter/cli_test_util.hpp"
 #include "io/image_io.hpp"
 #include "spt/spt.hpp"
@@ -37,14 +38,7 @@ cv::Mat frame_art(int i) {
 constexpr int kFrames = 6;
 constexpr double kTarget = 34;
 
-void write_frames(const TempDir& dir) {
-    for (int i = 0; i < kFrames; ++i) {
-        const cv::Mat f = frame_art(i);
-        char name[32];
-        std::snprintf(name, sizeof name, "f.%04d.png", i);
-        ASSERT_TRUE(spt::io::write_image(dir.file(name), uint32_t(f.cols), uint32_t(f.rows), f.data));
-    }
-}
+void write_frames(const TempDir& dir) { spt_test::write_frames(dir, kFrames, frame_art); }
 
 spt::cartoon::SequenceReport paint(const TempDir& dir, const std::string& out, bool motion, int threads) {
     spt::cartoon::SequenceOptions o;
@@ -97,11 +91,7 @@ TEST(CartoonMotion, ATranslatingShapeIsMovedNotRedrawn) {
         EXPECT_EQ(polygons, 0u) << "frame " << i;
         spt::Canvas c;
         ASSERT_TRUE((*rd)->render_frame(i, c));
-        const cv::Mat src = frame_art(int(i));
-        double sse = 0;
-        for (size_t p = 0; p < c.rgb.size(); ++p) sse += double((int(c.rgb[p]) - src.data[p]) * (int(c.rgb[p]) - src.data[p]));
-        const double psnr = 10 * std::log10(255.0 * 255.0 * double(c.rgb.size()) / std::max(sse, 1.0));
-        EXPECT_GE(psnr, kTarget) << "frame " << i;
+        EXPECT_GE(spt_test::psnr_of(c.rgb, frame_art(int(i)).data), kTarget) << "frame " << i;
     }
     // The painter's own PSNR is that of its canvas, the decoder's rendering.
     EXPECT_GE(with.min_psnr, kTarget);

@@ -9,6 +9,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "cartoon/cartoon_test_util.hpp"
 #include "converter/cli_test_util.hpp"
 #include "io/image_io.hpp"
 #include "spt/spt.hpp"
@@ -34,12 +35,7 @@ cv::Mat frame_art(int i) {
 TEST(CartoonSequence, StillShapesAreKeptMovingOnesMoved) {
     TempDir dir;
     const int n = 5;
-    for (int i = 0; i < n; ++i) {
-        const cv::Mat f = frame_art(i);
-        char name[32];
-        std::snprintf(name, sizeof name, "f.%04d.png", i);
-        ASSERT_TRUE(spt::io::write_image(dir.file(name), uint32_t(f.cols), uint32_t(f.rows), f.data));
-    }
+    spt_test::write_frames(dir, n, frame_art);
     const auto r = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("seq.spt"), "--style", "cartoon",
                                  "--target-psnr", "34", "--progress", "none", "--threads", "2"});
     ASSERT_EQ(r.code, 0) << r.err;
@@ -70,11 +66,7 @@ TEST(CartoonSequence, StillShapesAreKeptMovingOnesMoved) {
         EXPECT_LT(f->removed.size(), (*live)->size()) << "frame " << i;
         spt::Canvas c;
         ASSERT_TRUE((*rd)->render_frame(i, c));
-        const cv::Mat src = frame_art(int(i));
-        double sse = 0;
-        for (size_t p = 0; p < c.rgb.size(); ++p) sse += double((int(c.rgb[p]) - src.data[p]) * (int(c.rgb[p]) - src.data[p]));
-        const double psnr = 10 * std::log10(255.0 * 255.0 * double(c.rgb.size()) / std::max(sse, 1.0));
-        EXPECT_GE(psnr, 34.0) << "frame " << i;
+        EXPECT_GE(spt_test::psnr_of(c.rgb, frame_art(int(i)).data), 34.0) << "frame " << i;
     }
 }
 
@@ -102,13 +94,7 @@ TEST(CartoonSequence, PaintsAVideoFileEndToEnd) {
         spt::Canvas c;
         ASSERT_TRUE((*rd)->render_frame(i, c));
         ASSERT_EQ(c.rgb.size(), frame.image.rgb.size());
-        double sse = 0;
-        for (size_t p = 0; p < c.rgb.size(); ++p) {
-            const double d = double(c.rgb[p]) - double(frame.image.rgb[p]);
-            sse += d * d;
-        }
-        const double psnr = 10 * std::log10(255.0 * 255.0 * double(c.rgb.size()) / std::max(sse, 1.0));
-        EXPECT_GE(psnr, 34.0) << "frame " << i;
+        EXPECT_GE(spt_test::psnr_of(c.rgb, frame.image.rgb.data()), 34.0) << "frame " << i;
     }
 }
 
@@ -121,12 +107,7 @@ namespace {
 // budget below the smallest painting is said, not silently missed.
 TEST(CartoonSequence, TargetBytesLandsAtOrBelowTheBudget) {
     TempDir dir;
-    for (int i = 0; i < 8; ++i) {
-        const cv::Mat f = frame_art(i);
-        char name[32];
-        std::snprintf(name, sizeof name, "f.%04d.png", i);
-        ASSERT_TRUE(spt::io::write_image(dir.file(name), uint32_t(f.cols), uint32_t(f.rows), f.data));
-    }
+    spt_test::write_frames(dir, 8, frame_art);
     const auto high = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("high.spt"), "--style", "cartoon",
                                     "--target-psnr", "44", "--progress", "none"});
     ASSERT_EQ(high.code, 0) << high.err;
