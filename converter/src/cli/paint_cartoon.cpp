@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "cartoon/cartoon_paint.hpp"
@@ -29,6 +30,37 @@ cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
         f.search_tolerance = false;
     }
     return f;
+}
+
+// --target-bytes for the cartoon painter: bisection on the PSNR target between 15 and 60 dB,
+// `steps` trials, each a whole painting (`trial`) coded to a trial file that has no name
+// (io/trial_output.hpp); the fill layer's tolerance follows the target. Said on stderr as it
+// goes; a budget below the smallest painting is said and that painting chosen.
+struct TrialSize {
+    uint64_t bytes = 0;
+    double budget = 0;  // what --target-bytes allows this painting (N/s: its length at N a second)
+};
+
+Result<double> psnr_for_budget(const PaintCommandOptions& o, int steps,
+                               const std::function<Result<TrialSize>(double psnr)>& trial) {
+    double lo = 15, hi = 60, best = 0;
+    uint64_t smallest = UINT64_MAX;
+    for (int i = 0; i < steps; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        auto t = trial(mid);
+        if (!t) return t.error();
+        if (o.progress != io::ProgressMode::None)
+            std::fprintf(stderr, "spt paint: --target-bytes %llu: trial %d/%d at %.2f dB: %llu bytes\n",
+                         (unsigned long long)o.target_bytes, i + 1, steps, mid, (unsigned long long)t->bytes);
+        if (double(t->bytes) <= t->budget) { best = mid; lo = mid; } else { hi = mid; }
+        smallest = std::min(smallest, t->bytes);
+    }
+    if (best == 0)
+        std::fprintf(stderr, "spt paint: warning: --target-bytes %llu is below the smallest cartoon painting (%llu bytes); painting that\n",
+                     (unsigned long long)o.target_bytes, (unsigned long long)smallest);
+    const double psnr = best > 0 ? best : lo;
+    std::fprintf(stderr, "spt paint: --target-bytes %llu: --target-psnr %.2f\n", (unsigned long long)o.target_bytes, psnr);
+    return psnr;
 }
 
 // Paints `model` with `po` and writes it to o.output, or only to `trial` when given; returns the
@@ -97,22 +129,16 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
     cartoon::CartoonStats st;
     paint::PaintOptions po = o.paint;
     if (o.target_bytes > 0) {
-        // --target-bytes: bisection on the PSNR target, each trial a full painting coded to a
-        // trial file that has no name (io/trial_output.hpp; the fill layer's tolerance follows
-        // the target).
         auto trial = io::TrialOutput::create(o.output);
         if (!trial) return fail(trial.error().message);
-        double lo = 15, hi = 60, best = 0;
-        for (int i = 0; i < 8; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            po.target_psnr = mid;
+        auto psnr = psnr_for_budget(o, 8, [&](double target) -> Result<TrialSize> {
+            po.target_psnr = target;
             auto b = paint_write(o, model, setup, **renderer, po, &*trial, canvas, st);
-            if (!b) return fail(b.error().message);
-            if (*b <= o.target_bytes) { best = mid; lo = mid; } else { hi = mid; }
-        }
-        po.target_psnr = best > 0 ? best : lo;
-        std::fprintf(stderr, "spt paint: --target-bytes %llu: --target-psnr %.2f\n",
-                     (unsigned long long)o.target_bytes, po.target_psnr);
+            if (!b) return b.error();
+            return TrialSize{*b, double(o.target_bytes)};
+        });
+        if (!psnr) return fail(psnr.error().message);
+        po.target_psnr = *psnr;
     }
     auto written = paint_write(o, model, setup, **renderer, po, nullptr, canvas, st);
     if (!written) return fail(written.error().message);
@@ -139,43 +165,29 @@ std::vector<std::pair<std::string, std::string>> sequence_metadata(const PaintCo
             {"painter.options", meta.canonical()}};
 }
 
-// --target-bytes for a sequence: bisection on the PSNR target, each trial the whole sequence
-// painted to a trial file that has no name (io/trial_output.hpp), as for a still; the cost is
-// one painting per step, said on stderr as it goes.
+// --target-bytes for a sequence: each trial paints the whole sequence, with the file's real
+// metadata (its bytes count too).
 Result<double> search_sequence_psnr(const PaintCommandOptions& o, cartoon::SequenceOptions s) {
     auto trial = io::TrialOutput::create(o.output);
     if (!trial) return trial.error();
     s.output = trial->path();
     s.atomic_rename = false;
-    double lo = 15, hi = 60, best = 0;
-    uint64_t smallest = UINT64_MAX;
     constexpr int kSteps = 7;  // 45 dB / 2^7: the target within 0.4 dB
-    for (int i = 0; i < kSteps; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        s.paint.target_psnr = mid;
-        s.metadata = sequence_metadata(o, mid);  // its bytes count too
+    return psnr_for_budget(o, kSteps, [&](double target) -> Result<TrialSize> {
+        s.paint.target_psnr = target;
+        s.metadata = sequence_metadata(o, target);
         cartoon::SequenceReport r;
         if (Status st = cartoon::paint_sequence(s, r); !st) {
             Error e = st.error();
             e.message = trial->explain(e.message);
             return e;
         }
-        if (o.progress != io::ProgressMode::None)
-            std::fprintf(stderr, "spt paint: --target-bytes %llu: trial %d/%d at %.2f dB: %llu bytes\n",
-                         (unsigned long long)o.target_bytes, i + 1, kSteps, mid, (unsigned long long)r.bytes);
         // N/s: the budget of the clip's length (frames / fps) at N bytes a second
         const double budget = o.target_bytes_per_second
                                   ? double(o.target_bytes) * double(r.frames) * r.fps.den / std::max<uint32_t>(1, r.fps.num)
                                   : double(o.target_bytes);
-        if (double(r.bytes) <= budget) { best = mid; lo = mid; } else { hi = mid; }
-        smallest = std::min(smallest, r.bytes);
-    }
-    if (best == 0)
-        std::fprintf(stderr, "spt paint: warning: --target-bytes %llu is below the smallest cartoon painting (%llu bytes); painting that\n",
-                     (unsigned long long)o.target_bytes, (unsigned long long)smallest);
-    const double psnr = best > 0 ? best : lo;
-    std::fprintf(stderr, "spt paint: --target-bytes %llu: --target-psnr %.2f\n", (unsigned long long)o.target_bytes, psnr);
-    return psnr;
+        return TrialSize{r.bytes, budget};
+    });
 }
 
 int paint_cartoon_sequence(const PaintCommandOptions& o) {

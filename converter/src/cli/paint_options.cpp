@@ -139,8 +139,8 @@ void declare(Args& a) {
         .option("color-step", "Q", "choose colours on a lattice of step Q (1..32; default 12, or 4 with "
                                    "--target-psnr above 33) around the canvas under the stroke: coding 2 spends "
                                    "fewer bits on them")
-        .option("target-bytes", "N[/s]", "search lambda so that the file is at most N bytes (N/s: per second of a "
-                                         "clip); reports where it landed")
+        .option("target-bytes", "N[/s]", "search lambda (--style cartoon: the PSNR target) so that the file is at "
+                                         "most N bytes (N/s: per second of a clip); reports where it landed")
         .option("outline-tolerance", "PX", "--style cartoon: how far (pixels) a polygon's outline may leave "
                                            "the traced edge (default 0.35)")
         .group("colour and alpha")
