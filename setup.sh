@@ -36,6 +36,9 @@ build() {
   # ccache (when installed) makes a rebuild of an unchanged tree, in another clone too, a copy.
   local launcher=()
   command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  # Paths inside the checkout are hashed relative to it, so a clone in another folder (CI's)
+  # hits the cache this one filled.
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSPT_BUILD_TESTS="$tests" "${launcher[@]}" "$@" >/dev/null
   cmake --build "$build" --parallel "$(nproc)"
 }
