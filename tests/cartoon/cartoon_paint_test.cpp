@@ -69,6 +69,32 @@ TEST(CartoonPaint, FlatArtBecomesPolygonsAt40dB) {
     EXPECT_TRUE(p.stats.grid == 4 || p.stats.grid == 8);
 }
 
+// Black text a few pixels high, anti-aliased as a vector tool renders it: nearly every ink
+// pixel is a blend with the white around it.
+cv::Mat small_text(int w = 200, int h = 60) {
+    const int k = 8;
+    cv::Mat big(h * k, w * k, CV_8UC3, cv::Scalar(255, 255, 255));
+    cv::putText(big, "We, the people", cv::Point(6 * k, 24 * k), cv::FONT_HERSHEY_SIMPLEX, 0.45 * k, cv::Scalar(0, 0, 0), k);
+    cv::putText(big, "of the United", cv::Point(6 * k, 50 * k), cv::FONT_HERSHEY_SIMPLEX, 0.45 * k, cv::Scalar(0, 0, 0), k);
+    cv::Mat small;
+    cv::resize(big, small, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+    cv::GaussianBlur(small, small, cv::Size(5, 5), 0.7);  // resampled, as a warped layer is
+    return small;
+}
+
+TEST(CartoonPaint, SmallTextIsTracedInItsInkNotInABlend) {
+    const cv::Mat img = small_text();
+    const Painted p = paint_art(img, 36);
+    size_t polygons = 0;
+    for (const spt::Stroke& s : p.strokes) polygons += s.kind == spt::StrokeKind::Polygon;
+    EXPECT_GE(polygons, 15u);
+    // Thin glyphs have no flat inside: their most frequent value is one blend, and traced in it
+    // they are clamped wherever the source is darker or lighter. Measured: the fill layer at
+    // 30.09 dB so; at 31.19 dB traced in the mean of the far half of their blends.
+    EXPECT_GE(p.stats.fill_psnr, 30.8);
+    EXPECT_GE(p.stats.stamps.psnr, 36.0);
+}
+
 TEST(CartoonPaint, CanvasIsTheDecodersRendering) {
     const Painted p = paint_art(flat_art(), 40);
     auto r = spt::Renderer::create(p.setup.header, p.setup.templates);
