@@ -31,7 +31,7 @@ std::vector<long> cuts_of(const std::string& input, bool full, int step, int thr
                           int history = 4) {
     spt::plan::PlanOptions o;
     o.input = input;
-    o.cut_scan_full = full;
+    o.cut_scan = full ? spt::plan::CutScan::Full : spt::plan::CutScan::Sampled;
     o.cut_step = step;
     o.cut_history = history;
     o.threads = threads;
@@ -220,7 +220,7 @@ TEST(PlanCutScan, BadFramesItReadsAreErrorsOrSkipped) {
     auto plan = [&](bool full, bool skip) {
         spt::plan::PlanOptions o;
         o.input = in;
-        o.cut_scan_full = full;
+        o.cut_scan = full ? spt::plan::CutScan::Full : spt::plan::CutScan::Sampled;
         o.skip_bad_frames = skip;
         spt::io::Progress progress(spt::io::ProgressMode::None, "plan", 0);
         return spt::plan::make_plan(o, progress);

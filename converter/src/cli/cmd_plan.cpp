@@ -35,7 +35,10 @@ int cmd_plan(int argc, char** argv) {
     po.cut_threshold = o.cut_threshold;
     po.keyframe_interval = o.keyframe_interval;
     po.max_task_frames = o.max_task_frames;
-    po.cut_scan_full = o.cut_scan_full;
+    po.cut_scan = o.cut_scan == "full"      ? plan::CutScan::Full
+                  : o.cut_scan == "sampled" ? plan::CutScan::Sampled
+                  : o.cut_scan == "tasks"   ? plan::CutScan::Tasks
+                                            : plan::CutScan::Auto;
     po.cut_step = o.cut_step;
     po.cut_history = o.cut_history;
     po.seed = o.paint.seed;

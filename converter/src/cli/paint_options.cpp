@@ -238,8 +238,11 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
                                             "frames (whole --keyframe-interval steps when one fits); 0 = at cuts only",
                     0, "240")
             .option("cut-scan", "MODE", "sampled: judge frame pairs only where frames sampled every --cut-step "
-                                        "frames show a change a cut can hide in; full: judge every pair (reads every frame)",
-                    0, "sampled")
+                                        "frames show a change a cut can hide in; full: judge every pair (reads every "
+                                        "frame); tasks: no scan, each task finds the cuts in its own frames as it "
+                                        "paints them (the plan decodes one frame); auto: tasks for a video file "
+                                        "(which any scan decodes whole), sampled otherwise",
+                    0, "auto")
             .option("cut-step", "K", "the sampled cut scan's step (frames)", 0, "16")
             .option("cut-history", "N", "the sampled cut scan weighs a pair against the N pairs before it (1..12; "
                                         "12 is the full scan's own rule, and reads more frames)",
@@ -247,8 +250,9 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
     if (int rc = a.parse(argc, argv); rc >= 0) return rc;
     if (plan && a.has("cut-scan")) {
         const std::string m = a.get("cut-scan");
-        if (m != "full" && m != "sampled") return a.usage_error("--cut-scan: expected full or sampled, got '" + m + "'");
-        o.cut_scan_full = m == "full";
+        if (m != "auto" && m != "full" && m != "sampled" && m != "tasks")
+            return a.usage_error("--cut-scan: expected auto, sampled, full or tasks, got '" + m + "'");
+        o.cut_scan = m;
     }
     if (plan && a.has("cut-step")) {
         long k = 0;

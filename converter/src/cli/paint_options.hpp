@@ -59,7 +59,7 @@ struct PaintCommandOptions {
     int block_size = 16;                  // --motion-block N
     bool flow_orientation = false;        // --flow-orientation: new strokes along the motion
     long max_task_frames = 240;           // spt plan --max-task-frames N (0: split at cuts only)
-    bool cut_scan_full = false;           // spt plan --cut-scan full|sampled
+    std::string cut_scan = "auto";        // spt plan --cut-scan auto|sampled|full|tasks
     int cut_step = 16;                    // spt plan --cut-step K
     int cut_history = 4;                  // spt plan --cut-history N
 

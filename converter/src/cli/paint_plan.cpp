@@ -50,7 +50,9 @@ int paint_shot(const plan::Plan& p, size_t k, const std::string& output, int thr
         return rc == 0 ? fail("the plan's paint_args ask for help") : rc;
     video::VideoPaintOptions v;
     if (int rc = video_options(o, v); rc >= 0) return rc;
-    v.detect_cuts = false;  // the plan placed the cuts; a shot has none inside
+    // The plan placed the cuts and a shot has none inside, unless the plan left them to its
+    // tasks: then the painter's detector runs on the shot's frames alone, from a fresh state.
+    v.detect_cuts = p.cut_scan == "tasks";
     v.metadata = {{"painter.seed", std::to_string(p.seed)}};
     for (auto& e : plan::shot_metadata(p.id, k, p.shots.size(), s.first, s.last)) v.metadata.push_back(std::move(e));
     if (v.target_bytes > 0 && !v.target_bytes_per_second)  // a whole clip's budget: the shot's share

@@ -138,11 +138,11 @@ Result<Plan> parse_plan(const std::string& text, const std::string& src) {
     if (root.find("cut_scan")) {
         f.text(root, "cut_scan", p.cut_scan);
         long step = 1;
-        if (f.integer(root, "cut_step", 1, 1000000, step)) p.cut_step = int(step);
+        if (f.integer(root, "cut_step", 0, 1000000, step)) p.cut_step = int(step);
         long hist = 0;
         if (f.integer(root, "cut_history", 0, 1000000, hist)) p.cut_history = int(hist);
-        if (f.err.empty() && p.cut_scan != "full" && p.cut_scan != "sampled")
-            return make_error(Code::InvalidArgument, src + ": \"cut_scan\" must be \"full\" or \"sampled\"");
+        if (f.err.empty() && p.cut_scan != "full" && p.cut_scan != "sampled" && p.cut_scan != "tasks")
+            return make_error(Code::InvalidArgument, src + ": \"cut_scan\" must be \"full\", \"sampled\" or \"tasks\"");
     }
     if (const json::Value* c = f.need(root, "cuts", json::Type::Array))
         for (const json::Value& x : c->items) {

@@ -33,8 +33,10 @@ struct Plan {
     int keyframe_interval = 100;
     long max_task_frames = 0;       // 0: shots are never split
     std::vector<long> cuts;         // source numbers that start a shot (the first frame too)
-    // How the cuts were found: "full" (every frame) or "sampled" every cut_step frames with
-    // verdicts on cut_history pairs (1 and 0 for "full"); "" in plans written before these members (not written back: the id stays).
+    // How the cuts were found: "full" (every frame), "sampled" every cut_step frames with
+    // verdicts on cut_history pairs (1 and 0 for "full"), or "tasks" (by each task as it paints:
+    // `cuts` holds the first frame only; 0 and 0); "" in plans written before these members (not
+    // written back: the id stays).
     std::string cut_scan;
     int cut_step = 1;
     int cut_history = 0;            // the sampled scan's verdict history (0 for "full")

@@ -8,6 +8,7 @@
 
 #include "io/sequence.hpp"
 #include "plan/cut_frame_stores.hpp"
+#include "plan/frame_span.hpp"
 #include "plan/gray_frames.hpp"
 #include "plan/sampled_cuts.hpp"
 #include "video/cut_detect.hpp"
@@ -53,7 +54,28 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
     co.factor = o.cut_threshold;
     co.window = o.cut_window;
     uint64_t n = 0, decoded = 0;
-    if (o.cut_scan_full) {
+    const CutScan scan = o.cut_scan != CutScan::Auto ? o.cut_scan
+                         : io::is_video_file(o.input) ? CutScan::Tasks
+                                                      : CutScan::Sampled;
+    if (scan == CutScan::Tasks) {
+        // No scan: each task runs the painter's detector on the frames it decodes anyway, so
+        // the plan only counts frames (one frame decoded, for the canvas).
+        p.cut_scan = "tasks";
+        p.cut_step = 0;
+        p.cut_history = 0;
+        Result<FrameSpan> span = probe_frames(o.input, o.frames);
+        if (!span) return span.error();
+        if (Status st = set_fps(span->has_fps, span->fps); !st) return st.error();
+        p.first = span->first;
+        p.last = span->last;
+        p.width = span->width;
+        p.height = span->height;
+        p.cuts.push_back(p.first);
+        n = p.frames();
+        decoded = 1;
+        progress.set_total(1);
+        progress.update(1, "frame " + std::to_string(p.first));
+    } else if (scan == CutScan::Full) {
         p.cut_scan = "full";
         p.cut_step = 1;
         p.cut_history = 0;
