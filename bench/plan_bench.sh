@@ -5,7 +5,8 @@
 # picks others, FRAMES=0-189 is the whole clip) as PNG, as half-float ZIP EXR (oiiotool -d half;
 # a renderer's output), and as H.264 (libx264 crf 18). city.mpg has one hard cut, at 116.
 # Variants, interleaved: OLD as it plans by default, NEW with --cut-scan full, NEW with
-# --cut-scan sampled (its default); all must find the same cuts and shots.
+# --cut-scan sampled (a sequence's default); these must find the same cuts and shots. And NEW
+# with --cut-scan tasks (a video file's default: no scan, the tasks find the cuts as they paint).
 # Figures per variant and input, medians of RUNS:
 #   cpu   user+sys of the whole command, over the frames
 #   -st   the same less the process start-up (CPU of `spt --version`: loading the libraries)
@@ -44,15 +45,21 @@ for r in $(seq "$runs"); do
     one "$old" "$input" "old_$kind"
     one "$new" "$input" "full_$kind" --cut-scan full
     one "$new" "$input" "new_$kind" --cut-scan sampled
+    one "$new" "$input" "tasks_$kind" --cut-scan tasks
   done
 done
 shots() {  # the cuts and shots of a plan (the members every variant must agree on)
   python3 -c 'import json,sys; p=json.load(open(sys.argv[1])); print(p["cuts"], [(s["first"], s["last"], s["seed"]) for s in p["shots"]])' "$1"
 }
+cut_scan() { python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get("cut_scan", "full"))' "$1"; }
 for kind in png exr h264; do
-  for v in full new; do
-    [ "$(shots "old_$kind.json")" = "$(shots "${v}_$kind.json")" ] ||
-      { echo "plan_bench: the $kind plans of old and $v differ: $(shots "old_$kind.json") / $(shots "${v}_$kind.json")" >&2; exit 1; }
+  pairs="full:new"
+  # OLD's default for a video file may be the tasks mode, whose plans hold no cuts.
+  [ "$(cut_scan "old_$kind.json")" = tasks ] || pairs="$pairs old:new"
+  for pair in $pairs; do
+    a="${pair%:*}"; b="${pair#*:}"
+    [ "$(shots "${a}_$kind.json")" = "$(shots "${b}_$kind.json")" ] ||
+      { echo "plan_bench: the $kind plans of $a and $b differ: $(shots "${a}_$kind.json") / $(shots "${b}_$kind.json")" >&2; exit 1; }
   done
 done
 startup() {  # CPU seconds of a process that loads the same libraries and does nothing
@@ -63,10 +70,10 @@ med() { sort -n -k"$2" "$1" | awk -v k="$2" '{ v[NR] = $k } END { print v[int((N
 echo "spt plan, $frames frames 1920x1080, ${opts[*]}; medians of $runs interleaved runs; load $(cut -d' ' -f1-3 /proc/loadavg)"
 st_old=$(startup "$old"); st_new=$(startup "$new")
 echo "old:  $old (start-up $st_old CPU-s)"
-echo "full: $new --cut-scan full; new: the same --cut-scan sampled (start-up $st_new CPU-s)"
+echo "full: $new --cut-scan full; new: the same --cut-scan sampled; tasks: --cut-scan tasks (start-up $st_new CPU-s)"
 printf '%-5s %-4s %12s %12s %12s %12s %8s   (ms a frame)\n' input spt cpu -st wall pass read
 for kind in png exr h264; do
-  for b in old full new; do
+  for b in old full new tasks; do
     f="${b}_$kind.txt"; st=$st_old; [ $b != old ] && st=$st_new
     rd=$(sed -n 's/.*(\([0-9]*\) read.*/\1/p' "${b}_$kind.err"); [ -n "$rd" ] || rd=$frames
     printf '%-5s %-4s %12.1f %12.1f %12.1f %12.1f %8s\n' "$kind" "$b" \
@@ -76,14 +83,14 @@ for kind in png exr h264; do
       "$(awk -v v="$(med "$f" 3)" -v n=$frames 'BEGIN { print 1000 * v / n }')" "$rd/$frames"
   done
 done
-echo "the three variants' plans have the same cuts and shots (png, exr, h264): $(shots new_png.json | cut -c1-60)"
+echo "old, full and new plans have the same cuts and shots (png, exr, h264): $(shots new_png.json | cut -c1-60)"
 if [ "$paint" = --paint ]; then
   local_time() { local TIMEFORMAT='%U %S %R'; { time "$@" >/dev/null 2>&1; } 2>&1; }
   for kind in png exr h264; do
     read -r u s w < <(local_time "$new" paint --plan "new_$kind.json" -o "$kind.spt" --progress none)
     echo "$kind: spt paint --plan (new, default threads): $(awk -v u="$u" -v s="$s" -v w="$w" -v n=$frames \
       'BEGIN { printf "%.0f ms CPU, %.0f ms wall a frame", 1000 * (u + s) / n, 1000 * w / n }')"
-    for b in old full new; do
+    for b in old full new tasks; do
       st=$st_old; [ $b != old ] && st=$st_new
       awk -v b=$b -v u="$u" -v s="$s" -v w="$w" -v n=$frames -v st="$st" -v f="$(med "${b}_$kind.txt" 1)" \
           -v fw="$(med "${b}_$kind.txt" 2)" 'BEGIN {
