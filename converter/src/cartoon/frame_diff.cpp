@@ -108,7 +108,8 @@ bool same_colour(const Rgba8& a, const Rgba8& b, int tolerance = 4) {
 
 // An old polygon this close in colour may stand for a retraced one (a small region's mean
 // colour moves with the pixels noise adds to it or takes from it); where its colour shows
-// wrong, that counts in its cost.
+// wrong, that counts in its cost. (Butterfly, 12 frames at 36 dB: 8 gives 95,450 bytes, 16
+// 91,611, 32 91,535.)
 constexpr int kStandInColour = 16;
 
 // How far apart two boxes' sides are, pixels (the largest of the four).
@@ -117,10 +118,12 @@ int box_offset(const cv::Rect& a, const cv::Rect& b) {
                      std::abs(a.br().y - b.br().y)});
 }
 
-// An old polygon whose box is this close (pixels) may stand for a retraced one.
+// An old polygon whose box is this close (pixels) may stand for a retraced one. (6 gives
+// 90,709 bytes on the butterfly, for more coverage comparisons.)
 constexpr int kStandInBox = 3;
 // A new polygon whose correction costs at most this (bytes: about 40 visible pixels) may be
-// left out. Larger ones left out cost more stamps than their cascade, frame after frame.
+// left out. (Butterfly: none left out 118,774 bytes, 64 91,611, 256 the same: the new
+// polygons compressed video makes are specks.)
 constexpr int64_t kLeftOutBytes = 64;
 
 // Roughly what coding a stroke again costs, bytes: a polygon's vertices, a stamp.
@@ -130,7 +133,8 @@ int64_t stroke_bytes(const Stroke& s) {
 
 // What the stamps that correct a stand-in's coverage difference (`diff`, 255 a pixel) cost,
 // bytes: about a byte and a half a pixel of difference (the smallest stamps cover 2-4 px and
-// cost about 6 bytes; a difference is a sliver along the outline).
+// cost about 6 bytes; a difference is a sliver along the outline). Insensitive: 0.75 and 3 a
+// pixel give 91,611 and 92,054 bytes on the butterfly.
 int64_t stand_in_cost(int64_t diff) { return diff * 3 / (2 * 255); }
 
 // What adding polygon j costs, bytes: itself, every later polygon that overlaps its box and

@@ -20,7 +20,8 @@ namespace {
 
 // Per pixel, 1 where `shown` is visibly wrong for `model`: its squared error (summed over the
 // channels) above 12 times the target's mean squared error per channel, twice the target's
-// RMS error in each channel. Codec noise at the target's level stays under it.
+// RMS error in each channel. Codec noise at the target's level stays under it. (Insensitive:
+// 4 and 48 times give 91,228 and 90,803 bytes on the butterfly, 12 91,611.)
 std::vector<uint8_t> visibly_wrong(const paint::ImageView& model, const Canvas& shown, double target_psnr) {
     const double mse = 255.0 * 255.0 / std::pow(10.0, target_psnr / 10.0);
     const int64_t limit = int64_t(12 * mse);
