@@ -18,8 +18,6 @@ double frame_cost(const Frame& f) {
 
 namespace {
 
-constexpr double kInterLambdaScale = 16;
-
 // Per pixel, 1 where `shown` is visibly wrong for `model`: its squared error (summed over the
 // channels) above 12 times the target's mean squared error per channel, twice the target's
 // RMS error in each channel. Codec noise at the target's level stays under it. (Insensitive:
@@ -96,16 +94,13 @@ Result<InterFrame> plan_variant(const InterInput& in, bool lenient) {
 // The new stamps, painted on the plan's canvas to the target.
 void paint_stamps(const InterInput& in, InterFrame& r) {
     Frame& f = r.frame;
-    // A stamp must pay for itself 16 times more than on a key frame. An inter frame starts
-    // close to its target, and the painter, drawing candidates coarse to fine, would otherwise
-    // accept the first strokes that help a little, where fewer that help a lot reach the
-    // target too; short of it, the painter halves lambda (down to 1/64) as before. (12 frames
-    // at 36 dB, lambda times 1 / 2 / 4 / 8 / 16 / 32 / 64: butterfly 91,611 / 85,228 / 80,717 /
+    // A stamp must pay for itself 16 times more (kSequenceLambdaScale). (12 frames at 36 dB,
+    // inter frames' lambda times 1 / 2 / 4 / 8 / 16 / 32 / 64: butterfly 91,611 / 85,228 / 80,717 /
     // 79,534 / 78,028 / 77,597 / 77,398 bytes, taffy 525,668 / 463,324 / 422,076 / 403,274 /
     // 399,014 / 395,991 / 396,856, star 4,122 / 4,103 / 4,055 / 4,012 / 3,982 / 3,959 / 3,911;
     // 32 and 64 paint taffy 40% slower, and 128 leaves taffy frames under the target.)
     paint::PaintOptions po = in.paint;
-    po.lambda *= kInterLambdaScale;
+    if (po.target_psnr > 0) po.lambda *= kSequenceLambdaScale;
     if (!(po.target_psnr > 0 && r.kept_psnr >= po.target_psnr)) {
         // First only where the kept canvas is really worse than the target needs (4 times its
         // mean squared error over 7 x 7 pixels), then, short of the target, wherever the error
