@@ -137,14 +137,16 @@ Result<InterFrame> paint_inter_frame(const InterInput& in) {
     // Leniency changed nothing (the usual case on a morph): one painting.
     if (same_plan(strict->frame, lenient->frame)) return std::move(*strict);
     paint_stamps(in, *lenient);
-    // Both reach the target, or neither does; then the one closer to it.
+    // Both reach the target: the cheaper. One does: that one. Neither: the closer to it.
+    // Without a target, fewer bytes must not cost quality: the lenient one only when it is
+    // both cheaper and no worse.
     const double target = in.paint.target_psnr;
     const double ps = paint::psnr(in.model, strict->canvas.rgb.data());
     const double pl = paint::psnr(in.model, lenient->canvas.rgb.data());
-    const bool sr = !(target > 0) || ps >= target, lr = !(target > 0) || pl >= target;
     bool take_lenient = lenient->cost < strict->cost;
-    if (sr != lr) take_lenient = lr;
-    else if (!sr) take_lenient = pl > ps;
+    if (!(target > 0)) take_lenient = take_lenient && pl >= ps;
+    else if ((ps >= target) != (pl >= target)) take_lenient = pl >= target;
+    else if (ps < target) take_lenient = pl > ps;
     return take_lenient ? std::move(*lenient) : std::move(*strict);
 }
 
