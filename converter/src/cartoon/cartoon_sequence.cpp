@@ -2,12 +2,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 
 #include <opencv2/imgproc.hpp>
 
 #include "cartoon/cartoon_paint.hpp"
-#include "cartoon/frame_diff.hpp"
-#include "cartoon/motion_field.hpp"
+#include "cartoon/inter_frame.hpp"
 #include "spt/reader.hpp"
 #include "spt/writer.hpp"
 #include "video/frame_source.hpp"
@@ -78,54 +78,59 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             fill = build_fill_layer(rgb, opts.background, **renderer, fo, &palette);
         }
         Frame f;
-        f.index = index;
         if (key) {
             f.type = FrameType::Key;
             f.added = std::move(fill.strokes);
             rep.polygons_added += f.added.size();
             ++rep.key_frames;
             since_key = 0;
-        } else {
-            f.type = FrameType::Inter;
-            const cv::Mat before(int(H), int(W), CV_8UC3, prev.rgb.data());
-            MotionChoice m = choose_motion(live, fill.strokes, rgb, before, **renderer, setup.header, opts.motion);
-            FrameDiff d = diff_frame(m.moved, fill.strokes, m.ground_still, **renderer, int(W), int(H));
-            if (!m.field.empty()) {
-                // The field pays only when it keeps more than it costs: a vector moves every
-                // stroke of its block, and what it moves wrongly is drawn again.
-                MotionOptions still = opts.motion;
-                still.enabled = false;
-                MotionChoice z = choose_motion(live, fill.strokes, rgb, before, **renderer, setup.header, still);
-                FrameDiff dz = diff_frame(z.moved, fill.strokes, z.ground_still, **renderer, int(W), int(H));
-                if (kept_value(live, dz.removed) >= kept_value(live, d.removed) - motion_cost(m.field)) {
-                    m = std::move(z);
-                    d = std::move(dz);
+            // The canvas before the residual stamps: the polygons as a decoder draws them.
+            if (Status s = (*renderer)->render(canvas, f.added); !s) return s;
+            paint::PaintOptions po = opts.paint;
+            po.seed = video::frame_seed(opts.paint.seed, index);
+            // As on inter frames (inter_frame.hpp). Key frame lambda times 1 / 8 / 16 / 32, with
+            // inter frames' at 16, 12 frames at 36 dB: butterfly 78,028 / 62,804 / 61,559 /
+            // 59,860 bytes (its key frame 55,475 -> 35,359 at 16), taffy 399,014 / 386,954 /
+            // 384,468 / 384,329, star 3,982 throughout (its polygons reach the target).
+            if (po.target_psnr > 0) po.lambda *= kSequenceLambdaScale;
+            if (!(po.target_psnr > 0 && paint::psnr(model, canvas.rgb.data()) >= po.target_psnr)) {
+                const std::vector<uint8_t> region = residual_region(model, canvas, 24, 2);
+                if (!region.empty()) {
+                    std::vector<Stroke> stamps;
+                    paint::paint(model, canvas, **renderer, setup, po, stamps, &region);
+                    rep.stamps_added += stamps.size();
+                    f.added.insert(f.added.end(), stamps.begin(), stamps.end());
                 }
             }
-            if (!m.field.empty()) ++rep.motion_frames;
-            f.motion = std::move(m.field);
-            rep.polygons_kept += fill.strokes.size() - d.added.size();
-            rep.polygons_added += d.added.size();
-            rep.removed += d.removed.size();
-            f.removed = std::move(d.removed);
-            f.added = std::move(d.added);
+        } else {
+            InterInput in;
+            in.live = &live;
+            in.polygons = &fill.strokes;
+            in.cur = rgb;
+            in.prev = cv::Mat(int(H), int(W), CV_8UC3, prev.rgb.data());
+            in.model = model;
+            in.shown = &canvas;
+            in.renderer = renderer->get();
+            in.setup = &setup;
+            in.motion = opts.motion;
+            in.paint = opts.paint;
+            in.paint.seed = video::frame_seed(opts.paint.seed, index);
+            auto r = paint_inter_frame(in);
+            if (!r) return r.error();
+            if (std::getenv("SPT_CARTOON_DEBUG"))  // tuning aid: what each frame keeps and adds
+                std::fprintf(stderr, "frame %u: %s, removed %zu, polygons added %llu (stood in %u, left out %u), kept %.2f dB, stamps %llu, cost %.0f\n",
+                             index, r->lenient ? "lenient" : "strict", r->frame.removed.size(),
+                             (unsigned long long)r->polygons_added, r->stood_in, r->left_out, r->kept_psnr,
+                             (unsigned long long)r->stamps, r->cost);
+            f = std::move(r->frame);
+            canvas = std::move(r->canvas);
+            if (!f.motion.empty()) ++rep.motion_frames;
+            rep.polygons_kept += r->polygons_kept;
+            rep.polygons_added += r->polygons_added;
+            rep.stamps_added += r->stamps;
+            rep.removed += f.removed.size();
         }
-        // The canvas before the residual stamps: what a decoder shows with this frame's
-        // polygons applied.
-        std::vector<Stroke> next = live;
-        if (Status s = apply_frame(next, f, setup.header); !s) return s;
-        if (Status s = (*renderer)->render(canvas, next); !s) return s;
-        paint::PaintOptions po = opts.paint;
-        po.seed = video::frame_seed(opts.paint.seed, index);
-        if (!(po.target_psnr > 0 && paint::psnr(model, canvas.rgb.data()) >= po.target_psnr)) {
-            const std::vector<uint8_t> region = residual_region(model, canvas, 24, 2);
-            if (!region.empty()) {
-                std::vector<Stroke> stamps;
-                paint::paint(model, canvas, **renderer, setup, po, stamps, &region);
-                rep.stamps_added += stamps.size();
-                f.added.insert(f.added.end(), stamps.begin(), stamps.end());
-            }
-        }
+        f.index = index;
         if (Status s = (*writer)->append(f); !s) {
             (*writer)->abort();
             return s;

@@ -1,8 +1,8 @@
 // `spt paint --style cartoon` for image sequences and videos. Each frame is traced to polygons
-// with the key frame's palette; an inter frame keeps every polygon that traced the same and
-// every stamp whose ground did not change (frame_diff.hpp), moves what reappears translated
-// (motion_field.hpp), removes the rest, adds the new polygons and paints stamps where the
-// error is.
+// with the key frame's palette; an inter frame (inter_frame.hpp) keeps the polygons that
+// traced the same (frame_diff.hpp) and the stamps that still help (stamp_keep.hpp), moves what
+// reappears translated (motion_field.hpp), removes the rest, adds the new polygons and paints
+// stamps where the error is.
 #pragma once
 
 #include <cstdint>

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <map>
 
+#include "cartoon/draw_order.hpp"
+
 namespace spt::cartoon {
 
 cv::Rect stroke_box(const Stroke& s, const Renderer& renderer, int W, int H) {
@@ -25,12 +27,6 @@ cv::Rect stroke_box(const Stroke& s, const Renderer& renderer, int W, int H) {
 }
 
 namespace {
-
-bool overlaps_any(const cv::Rect& r, const std::vector<cv::Rect>& boxes) {
-    for (const cv::Rect& b : boxes)
-        if ((r & b).area() > 0) return true;
-    return false;
-}
 
 // A polygon as a key for exact lookup.
 std::vector<int32_t> key_of(const PolygonStroke& p) {
@@ -59,12 +55,20 @@ std::vector<int32_t> top_owner(const std::vector<Stroke>& polygons, const Render
     return owner;
 }
 
+struct CoverageDiff {
+    int64_t diff = INT64_MAX;    // over the pixels that show, 255 a pixel
+    int64_t area = 0;            // of the first polygon
+    int64_t wrong = INT64_MAX;   // of `diff`, over the pixels the previous frame gets wrong
+};
+
 // Coverage difference of two polygons over the pixels `shows`, and the area of the first.
-template <class Shows>
-std::pair<int64_t, int64_t> coverage_diff(const Stroke& a, const Stroke& b, const Renderer& renderer, Shows shows) {
+// With `recolour` (b's colour is not a's), all of b that shows counts where the picture is wrong.
+template <class Shows, class Wrong>
+CoverageDiff coverage_diff(const Stroke& a, const Stroke& b, const Renderer& renderer, Shows shows, Wrong wrong,
+                           bool recolour = false) {
     Mask ma, mb;
-    if (!renderer.stroke_mask(a, ma) || !renderer.stroke_mask(b, mb)) return {INT64_MAX, 0};
-    int64_t diff = 0, area = 0;
+    if (!renderer.stroke_mask(a, ma) || !renderer.stroke_mask(b, mb)) return {};
+    int64_t diff = 0, area = 0, bad = 0;
     const int32_t x0 = std::min(ma.x0, mb.x0), y0 = std::min(ma.y0, mb.y0);
     const int32_t x1 = std::max(ma.x0 + int32_t(ma.w), mb.x0 + int32_t(mb.w));
     const int32_t y1 = std::max(ma.y0 + int32_t(ma.h), mb.y0 + int32_t(mb.h));
@@ -76,88 +80,190 @@ std::pair<int64_t, int64_t> coverage_diff(const Stroke& a, const Stroke& b, cons
         for (int32_t x = x0; x < x1; ++x) {
             const int va = at(ma, x, y), vb = at(mb, x, y);
             area += va;
-            if (shows(x, y)) diff += std::abs(va - vb);
+            if ((va != vb || (recolour && vb)) && shows(x, y)) {
+                diff += std::abs(va - vb);
+                if (wrong(x, y)) bad += recolour ? std::max(va, vb) : std::abs(va - vb);
+            }
         }
-    return {diff, area};
+    return {diff, area, bad};
 }
 
-bool close_enough(std::pair<int64_t, int64_t> d) { return d.first <= std::max<int64_t>(2 * 255, d.second / 500); }
+// A polygon's coverage over the pixels `shows` (255 a pixel): what leaving it out changes.
+template <class Shows>
+int64_t visible_coverage(const Stroke& a, const Renderer& renderer, Shows shows) {
+    Mask m;
+    if (!renderer.stroke_mask(a, m)) return INT64_MAX;
+    int64_t c = 0;
+    for (uint32_t y = 0; y < m.h; ++y)
+        for (uint32_t x = 0; x < m.w; ++x)
+            if (shows(m.x0 + int32_t(x), m.y0 + int32_t(y))) c += m.a[size_t(y) * m.w + x];
+    return c;
+}
+
+bool close_enough(const CoverageDiff& d) { return d.diff <= std::max<int64_t>(2 * 255, d.area / 500); }
+
+bool same_colour(const Rgba8& a, const Rgba8& b, int tolerance = 4) {
+    return std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance && std::abs(a.b - b.b) <= tolerance;
+}
+
+// An old polygon this close in colour may stand for a retraced one (a small region's mean
+// colour moves with the pixels noise adds to it or takes from it); where its colour shows
+// wrong, that counts in its cost. (Butterfly, 12 frames at 36 dB: 8 gives 95,450 bytes, 16
+// 91,611, 32 91,535.)
+constexpr int kStandInColour = 16;
+
+// How far apart two boxes' sides are, pixels (the largest of the four).
+int box_offset(const cv::Rect& a, const cv::Rect& b) {
+    return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.br().x - b.br().x),
+                     std::abs(a.br().y - b.br().y)});
+}
+
+// An old polygon whose box is this close (pixels) may stand for a retraced one. (6 gives
+// 90,709 bytes on the butterfly, for more coverage comparisons.)
+constexpr int kStandInBox = 3;
+// A new polygon whose correction costs at most this (bytes: about 40 visible pixels) may be
+// left out. (Butterfly: none left out 118,774 bytes, 64 91,611, 256 the same: the new
+// polygons compressed video makes are specks.)
+constexpr int64_t kLeftOutBytes = 64;
+
+// Roughly what coding a stroke again costs, bytes: a polygon's vertices, a stamp.
+int64_t stroke_bytes(const Stroke& s) {
+    return s.kind == StrokeKind::Polygon ? 8 + 2 * int64_t(s.polygon.points.size()) : 6;
+}
+
+// What the stamps that correct a stand-in's coverage difference (`diff`, 255 a pixel) cost,
+// bytes: about a byte and a half a pixel of difference (the smallest stamps cover 2-4 px and
+// cost about 6 bytes; a difference is a sliver along the outline). Insensitive: 0.75 and 3 a
+// pixel give 91,611 and 92,054 bytes on the butterfly.
+int64_t stand_in_cost(int64_t diff) { return diff * 3 / (2 * 255); }
+
+// What adding polygon j costs, bytes: itself, every later polygon that overlaps its box and
+// would otherwise be kept (added polygons go on top, so those must be added again above it),
+// and the old stamps in its box (an added polygon removes the stamps it draws over).
+int64_t cascade_cost(size_t j, const cv::Rect& box, const std::vector<cv::Rect>& boxes,
+                     const std::vector<char>& likely_kept, const std::vector<Stroke>& polygons,
+                     const std::vector<cv::Rect>& stamp_boxes) {
+    int64_t c = stroke_bytes(polygons[j]);
+    for (size_t k = j + 1; k < polygons.size(); ++k)
+        if (likely_kept[k] && (boxes[k] & box).area() > 0) c += stroke_bytes(polygons[k]);
+    for (const cv::Rect& b : stamp_boxes)
+        if ((b & box).area() > 0) c += 6;
+    return c;
+}
 
 }  // namespace
 
 FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stroke>& polygons,
-                     const std::vector<char>& ground_still, const Renderer& renderer, int W, int H) {
+                     const Renderer& renderer, int W, int H, const DiffOptions& opts) {
     const std::vector<int32_t> owner = top_owner(polygons, renderer, W, H);
     std::map<std::vector<int32_t>, std::vector<uint32_t>> where;  // old polygon -> its indices
     for (uint32_t i = 0; i < old_live.size(); ++i)
         if (old_live[i].kind == StrokeKind::Polygon) where[key_of(old_live[i].polygon)].push_back(i);
     std::vector<char> keep(old_live.size(), 0);
+    // For the cascade's cost: the new polygons' boxes, which of them an old polygon of the same
+    // colour and box could stand for, and the old stamps' boxes.
+    std::vector<cv::Rect> boxes, old_boxes(old_live.size()), stamp_boxes;
+    for (const Stroke& s : polygons) boxes.push_back(stroke_box(s, renderer, W, H));
+    for (uint32_t i = 0; i < old_live.size(); ++i) {
+        old_boxes[i] = stroke_box(old_live[i], renderer, W, H);
+        if (old_live[i].kind == StrokeKind::Stamp) stamp_boxes.push_back(old_boxes[i]);
+    }
+    std::vector<char> likely_kept(polygons.size(), 0);
+    for (size_t k = 0; k < polygons.size(); ++k) {
+        if (where.count(key_of(polygons[k].polygon))) { likely_kept[k] = 1; continue; }
+        for (uint32_t i = 0; i < old_live.size() && !likely_kept[k]; ++i)
+            likely_kept[k] = old_live[i].kind == StrokeKind::Polygon &&
+                             same_colour(old_live[i].polygon.color, polygons[k].polygon.color) &&
+                             box_offset(old_boxes[i], boxes[k]) <= 1;
+    }
     FrameDiff d;
-    int64_t last = -1;
+    AddedCover cover(W, H);
+    KeptOrder order(W, H);
+    auto keep_old = [&](uint32_t i) {
+        keep[i] = 1;
+        order.keep(old_live[i], i, renderer);
+    };
     for (size_t j = 0; j < polygons.size(); ++j) {
         const Stroke& s = polygons[j];
-        const cv::Rect box = stroke_box(s, renderer, W, H);
+        const cv::Rect& box = boxes[j];
         bool kept = false;
         auto it = where.find(key_of(s.polygon));
-        if (it != where.end() && !overlaps_any(box, d.added_boxes)) {
+        if (it != where.end() && !cover.hits(s, box, renderer)) {
             for (uint32_t i : it->second)
-                if (int64_t(i) > last && !keep[i]) {
-                    keep[i] = 1;
-                    last = i;
+                if (!keep[i] && order.fits(old_live[i], i, renderer)) {
+                    keep_old(i);
                     kept = true;
                     break;
                 }
         }
+        const auto shows = [&](int32_t x, int32_t y) {
+            return x >= 0 && y >= 0 && x < W && y < H && owner[size_t(y) * W + x] <= int32_t(j);
+        };
+        // Where keeping the old picture costs stamps: pixels the previous frame shows visibly
+        // wrong for this one (every pixel when the caller did not say).
+        const auto wrong = [&](int32_t x, int32_t y) { return !opts.wrong || (*opts.wrong)[size_t(y) * W + x] != 0; };
+        const auto shows_wrong = [&](int32_t x, int32_t y) { return shows(x, y) && wrong(x, y); };
         // Not traced identically (compressed video: noise moves an outline's vertices), but an
         // old polygon of nearly the same colour, box and coverage where it shows stands for
         // it: what stays still is not coded again, and the stamps correct the rest.
-        if (!kept && !overlaps_any(box, d.added_boxes))
-            for (uint32_t i = uint32_t(last + 1); i < old_live.size(); ++i) {
+        uint32_t stand_in = UINT32_MAX;
+        int64_t stand_in_diff = INT64_MAX;
+        // Where the new polygon touches one added before it, the old picture is gone: neither a
+        // stand-in nor leaving it out shows it there (it would be under the added one).
+        const bool under_added = !kept && cover.hits(s, box, renderer);
+        if (!kept && !under_added)
+            for (uint32_t i = 0; i < old_live.size(); ++i) {
                 const Stroke& o = old_live[i];
                 if (o.kind != StrokeKind::Polygon || keep[i]) continue;
-                const Rgba8& a = o.polygon.color;
-                const Rgba8& b = s.polygon.color;
-                if (std::abs(a.r - b.r) > 4 || std::abs(a.g - b.g) > 4 || std::abs(a.b - b.b) > 4) continue;
-                const cv::Rect ob = stroke_box(o, renderer, W, H);
-                if (std::abs(ob.x - box.x) > 1 || std::abs(ob.y - box.y) > 1 || std::abs(ob.br().x - box.br().x) > 1 ||
-                    std::abs(ob.br().y - box.br().y) > 1)
-                    continue;
-                if (overlaps_any(ob, d.added_boxes)) continue;
-                const auto shows = [&](int32_t x, int32_t y) {
-                    return x >= 0 && y >= 0 && x < W && y < H && owner[size_t(y) * W + x] <= int32_t(j);
-                };
-                if (!close_enough(coverage_diff(s, o, renderer, shows))) continue;
-                keep[i] = 1;
-                last = i;
-                kept = true;
-                break;
+                const bool same = same_colour(o.polygon.color, s.polygon.color);
+                if (!same && !(opts.stand_ins && same_colour(o.polygon.color, s.polygon.color, kStandInColour))) continue;
+                const cv::Rect& ob = old_boxes[i];
+                const int off = box_offset(ob, box);
+                if (off > (opts.stand_ins ? kStandInBox : 1)) continue;
+                if (cover.hits(o, ob, renderer) || !order.fits(o, i, renderer)) continue;
+                const CoverageDiff cd = coverage_diff(s, o, renderer, shows, wrong, !same);
+                if (same && off <= 1 && close_enough(cd)) {
+                    keep_old(i);
+                    kept = true;
+                    break;
+                }
+                if (cd.wrong < stand_in_diff) {
+                    stand_in_diff = cd.wrong;
+                    stand_in = i;
+                }
             }
+        // Retraced a little more than that, or new and mostly hidden: adding it on top would
+        // force every later polygon that overlaps it to be added again (the cascade), and the
+        // old stamps under them to be painted again. When that costs more than the stamps that
+        // correct the difference, the old polygon stays (or the new one is left out).
+        if (!kept && !under_added && opts.stand_ins) {
+            const int64_t cascade = cascade_cost(j, box, boxes, likely_kept, polygons, stamp_boxes);
+            const int64_t hidden = stand_in_cost(visible_coverage(s, renderer, shows_wrong));
+            const int64_t instead = stand_in == UINT32_MAX ? INT64_MAX : stand_in_cost(stand_in_diff);
+            // A new polygon with an old counterpart is never left out: that would remove the
+            // counterpart and the old picture with it.
+            if (instead < cascade) {
+                keep_old(stand_in);
+                kept = true;
+                ++d.stood_in;
+            } else if (stand_in == UINT32_MAX && hidden < cascade && hidden <= kLeftOutBytes) {
+                kept = true;  // left out
+                ++d.left_out;
+            }
+        }
         if (!kept) {
             d.added.push_back(s);
             d.added_boxes.push_back(box);
-        }
-    }
-    // Where the added polygons draw: a stamp there would be drawn under them. Their boxes
-    // are too coarse (a fill's box spans the frame).
-    cv::Mat drawn(H, W, CV_8U, cv::Scalar(0));
-    Mask m;
-    for (const Stroke& s : d.added) {
-        if (!renderer.stroke_mask(s, m)) continue;
-        for (uint32_t y = 0; y < m.h; ++y) {
-            const int32_t py = m.y0 + int32_t(y);
-            if (py < 0 || py >= H) continue;
-            for (uint32_t x = 0; x < m.w; ++x) {
-                const int32_t px = m.x0 + int32_t(x);
-                if (px >= 0 && px < W && m.a[size_t(y) * m.w + x]) drawn.at<uint8_t>(py, px) = 1;
-            }
+            cover.add(s, box, renderer);
         }
     }
     for (uint32_t i = 0; i < old_live.size(); ++i) {
         if (old_live[i].kind == StrokeKind::Polygon || keep[i]) continue;
-        // A stamp keeps its place in the old order; it stays where nothing under it changed.
+        // A stamp keeps its place in the old order; it goes where an added polygon draws (it
+        // would be drawn under it). Whether the others still help is stamp_keep.hpp's rule.
         if (old_live[i].kind != StrokeKind::Stamp) continue;
-        const cv::Rect box = stroke_box(old_live[i], renderer, W, H);
-        if (box.area() == 0 || !ground_still[i] || cv::countNonZero(drawn(box)) > 0) continue;
+        const cv::Rect& box = old_boxes[i];
+        if (box.area() == 0 || cv::countNonZero(cover.drawn(box)) > 0) continue;
         keep[i] = 1;
     }
     for (uint32_t i = 0; i < old_live.size(); ++i)

@@ -146,11 +146,6 @@ MotionChoice choose_motion(const std::vector<Stroke>& old_live, const std::vecto
             m.moved = old_live;
         }
     }
-    m.ground_still.assign(old_live.size(), 0);
-    for (size_t i = 0; i < old_live.size(); ++i)
-        if (old_live[i].kind == StrokeKind::Stamp)
-            m.ground_still[i] = ground_same(cur, prev, stroke_box(old_live[i], renderer, W, H),
-                                            stroke_box(m.moved[i], renderer, W, H));
     return m;
 }
 

@@ -3,7 +3,7 @@
 // shifted) votes for its shift in the block holding its first vertex; a stamp votes for a shift under which the source beneath it moved
 // with it. Each block takes the vector with the most votes (weighted by what keeping the
 // stroke saves), so whatever a block's vector would move wrongly (a still stroke in a moving
-// block) is removed by the frame diff and drawn again.
+// block) is removed (frame_diff.hpp, stamp_keep.hpp) and drawn again.
 #pragma once
 
 #include <cstdint>
@@ -19,7 +19,6 @@ namespace spt::cartoon {
 struct MotionChoice {
     MotionField field;                // empty when every block stays still
     std::vector<Stroke> moved;        // the old live list after the move
-    std::vector<char> ground_still;   // per old stroke: the source under it moved with it
     uint64_t moving_blocks = 0;
 };
 

@@ -1,0 +1,153 @@
+#include "cartoon/inter_frame.hpp"
+
+#include <cmath>
+
+#include "cartoon/cartoon_paint.hpp"
+#include "cartoon/frame_diff.hpp"
+#include "cartoon/stamp_keep.hpp"
+#include "spt/reader.hpp"
+
+namespace spt::cartoon {
+
+double frame_cost(const Frame& f) {
+    double c = 0.3 * double(f.removed.size());
+    for (const Stroke& s : f.added)
+        c += s.kind == StrokeKind::Polygon ? 8.0 + 2.0 * double(s.polygon.points.size()) : 5.6;
+    return c;
+}
+
+namespace {
+
+// Per pixel, 1 where `shown` is visibly wrong for `model`: its squared error (summed over the
+// channels) above 12 times the target's mean squared error per channel, twice the target's
+// RMS error in each channel. Codec noise at the target's level stays under it. (Insensitive:
+// 4 and 48 times give 91,228 and 90,803 bytes on the butterfly, 12 91,611.)
+std::vector<uint8_t> visibly_wrong(const paint::ImageView& model, const Canvas& shown, double target_psnr) {
+    const double mse = 255.0 * 255.0 / std::pow(10.0, target_psnr / 10.0);
+    const int64_t limit = int64_t(12 * mse);
+    std::vector<uint8_t> wrong(size_t(model.width) * model.height);
+    const uint8_t* a = model.rgb;
+    const uint8_t* b = shown.rgb.data();
+    for (size_t p = 0; p < wrong.size(); ++p, a += 3, b += 3) {
+        const int dr = a[0] - b[0], dg = a[1] - b[1], db = a[2] - b[2];
+        wrong[p] = int64_t(dr * dr + dg * dg + db * db) > limit;
+    }
+    return wrong;
+}
+
+// What the frame keeps, moves, removes and adds before its new stamps, strict (`lenient` false:
+// an old polygon stays only when it traced the same) or lenient (frame_diff.hpp DiffOptions);
+// `canvas` holds it as a decoder draws it.
+Result<InterFrame> plan_variant(const InterInput& in, bool lenient) {
+    const std::vector<Stroke>& live = *in.live;
+    const Renderer& renderer = *in.renderer;
+    const Header& header = in.setup->header;
+    const int W = int(in.model.width), H = int(in.model.height);
+    DiffOptions dopt;
+    dopt.stand_ins = lenient;
+    std::vector<uint8_t> wrong;
+    if (lenient && in.shown && in.paint.target_psnr > 0) {
+        wrong = visibly_wrong(in.model, *in.shown, in.paint.target_psnr);
+        dopt.wrong = &wrong;
+    }
+    // Polygons by the frame diff; old stamps by what they still do for the new frame
+    // (stamp_keep.hpp), not by whether the source under them flickered.
+    auto diff = [&](const MotionChoice& mc) {
+        FrameDiff fd = diff_frame(mc.moved, *in.polygons, renderer, W, H, dopt);
+        fd.removed = drop_unhelpful_stamps(mc.moved, fd.removed, fd.added, in.model, renderer, header);
+        return fd;
+    };
+    MotionChoice m = choose_motion(live, *in.polygons, in.cur, in.prev, renderer, header, in.motion);
+    FrameDiff d = diff(m);
+    if (!m.field.empty()) {
+        // The field pays only when it keeps more than it costs: a vector moves every stroke of
+        // its block, and what it moves wrongly is drawn again.
+        MotionOptions still = in.motion;
+        still.enabled = false;
+        MotionChoice z = choose_motion(live, *in.polygons, in.cur, in.prev, renderer, header, still);
+        FrameDiff dz = diff(z);
+        if (kept_value(live, dz.removed) >= kept_value(live, d.removed) - motion_cost(m.field)) {
+            m = std::move(z);
+            d = std::move(dz);
+        }
+    }
+    InterFrame r;
+    r.lenient = lenient;
+    r.stood_in = d.stood_in;
+    r.left_out = d.left_out;
+    r.polygons_added = d.added.size();
+    r.polygons_kept = in.polygons->size() - d.added.size() - d.left_out;
+    Frame& f = r.frame;
+    f.type = FrameType::Inter;
+    f.motion = std::move(m.field);
+    f.removed = std::move(d.removed);
+    f.added = std::move(d.added);
+    // The canvas before the residual stamps: what a decoder shows with this frame's polygons.
+    std::vector<Stroke> next = live;
+    if (Status s = apply_frame(next, f, header); !s) return s.error();
+    r.canvas = Canvas(header);
+    if (Status s = renderer.render(r.canvas, next); !s) return s.error();
+    r.kept_psnr = paint::psnr(in.model, r.canvas.rgb.data());
+    return r;
+}
+
+// The new stamps, painted on the plan's canvas to the target.
+void paint_stamps(const InterInput& in, InterFrame& r) {
+    Frame& f = r.frame;
+    // A stamp must pay for itself 16 times more (kSequenceLambdaScale). (12 frames at 36 dB,
+    // inter frames' lambda times 1 / 2 / 4 / 8 / 16 / 32 / 64: butterfly 91,611 / 85,228 / 80,717 /
+    // 79,534 / 78,028 / 77,597 / 77,398 bytes, taffy 525,668 / 463,324 / 422,076 / 403,274 /
+    // 399,014 / 395,991 / 396,856, star 4,122 / 4,103 / 4,055 / 4,012 / 3,982 / 3,959 / 3,911;
+    // 32 and 64 paint taffy 40% slower, and 128 leaves taffy frames under the target.)
+    paint::PaintOptions po = in.paint;
+    if (po.target_psnr > 0) po.lambda *= kSequenceLambdaScale;
+    if (!(po.target_psnr > 0 && r.kept_psnr >= po.target_psnr)) {
+        // First only where the kept canvas is really worse than the target needs (4 times its
+        // mean squared error over 7 x 7 pixels), then, short of the target, wherever the error
+        // is: codec noise spread over the still parts is not painted while a few moving
+        // edges pay for the target. (Measured, 12 frames at 36 dB: butterfly 104,694 -> 102,985
+        // bytes, taffy 526,026 -> 525,668, star 3,774 -> 3,751; factors 2 and 8 about the same.)
+        std::vector<std::vector<uint8_t>> regions;
+        if (po.target_psnr > 0) regions.push_back(worse_than_target(in.model, r.canvas, po.target_psnr, 4, 3, 2));
+        regions.push_back(residual_region(in.model, r.canvas, 24, 2));
+        for (const auto& region : regions) {
+            if (region.empty()) continue;
+            std::vector<Stroke> stamps;
+            const paint::PaintStats ps = paint::paint(in.model, r.canvas, *in.renderer, *in.setup, po, stamps, &region);
+            r.stamps += stamps.size();
+            f.added.insert(f.added.end(), stamps.begin(), stamps.end());
+            if (ps.stop == paint::StopReason::TargetPsnr) break;
+        }
+    }
+    r.cost = frame_cost(f);
+}
+
+bool same_plan(const Frame& a, const Frame& b) {
+    return a.removed == b.removed && a.added == b.added && a.motion.vectors == b.motion.vectors;
+}
+
+}  // namespace
+
+Result<InterFrame> paint_inter_frame(const InterInput& in) {
+    auto strict = plan_variant(in, false);
+    if (!strict) return strict.error();
+    auto lenient = plan_variant(in, true);
+    if (!lenient) return lenient.error();
+    paint_stamps(in, *strict);
+    // Leniency changed nothing (the usual case on a morph): one painting.
+    if (same_plan(strict->frame, lenient->frame)) return std::move(*strict);
+    paint_stamps(in, *lenient);
+    // Both reach the target: the cheaper. One does: that one. Neither: the closer to it.
+    // Without a target, fewer bytes must not cost quality: the lenient one only when it is
+    // both cheaper and no worse.
+    const double target = in.paint.target_psnr;
+    const double ps = paint::psnr(in.model, strict->canvas.rgb.data());
+    const double pl = paint::psnr(in.model, lenient->canvas.rgb.data());
+    bool take_lenient = lenient->cost < strict->cost;
+    if (!(target > 0)) take_lenient = take_lenient && pl >= ps;
+    else if ((ps >= target) != (pl >= target)) take_lenient = pl >= target;
+    else if (ps < target) take_lenient = pl > ps;
+    return take_lenient ? std::move(*lenient) : std::move(*strict);
+}
+
+}  // namespace spt::cartoon
