@@ -134,7 +134,7 @@ Result<InterFrame> paint_inter_frame(const InterInput& in) {
     auto lenient = plan_variant(in, true);
     if (!lenient) return lenient.error();
     paint_stamps(in, *strict);
-    // Leniency changed nothing (the usual case on a morph): one painting.
+    // Leniency changed nothing (no old polygon stood in, none was left out): one painting.
     if (same_plan(strict->frame, lenient->frame)) return std::move(*strict);
     paint_stamps(in, *lenient);
     // Both reach the target: the cheaper. One does: that one. Neither: the closer to it.
