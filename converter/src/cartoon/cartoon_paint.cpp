@@ -1,6 +1,5 @@
 #include "cartoon/cartoon_paint.hpp"
 
-#include <cmath>
 #include <cstdlib>
 
 #include <opencv2/imgproc.hpp>
@@ -21,34 +20,6 @@ std::vector<uint8_t> residual_region(const paint::ImageView& model, const Canvas
     if (!any) return {};
     if (grow > 0) cv::dilate(m, m, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * grow + 1, 2 * grow + 1)));
     return std::vector<uint8_t>(m.datastart, m.dataend);
-}
-
-std::vector<uint8_t> worse_than_target(const paint::ImageView& model, const Canvas& canvas, double target_psnr,
-                                       double factor, int radius, int grow) {
-    const int W = int(model.width), H = int(model.height);
-    cv::Mat err(H, W, CV_32F);
-    for (int y = 0; y < H; ++y) {
-        const uint8_t* a = model.rgb + size_t(y) * size_t(W) * 3;
-        const uint8_t* b = canvas.row(uint32_t(y));
-        float* e = err.ptr<float>(y);
-        for (int x = 0; x < W; ++x) {
-            const int dr = a[3 * x] - b[3 * x], dg = a[3 * x + 1] - b[3 * x + 1], db = a[3 * x + 2] - b[3 * x + 2];
-            e[x] = float(dr * dr + dg * dg + db * db) / 3.0f;
-        }
-    }
-    cv::Mat local;
-    cv::boxFilter(err, local, CV_32F, cv::Size(2 * radius + 1, 2 * radius + 1), cv::Point(-1, -1), true,
-                  cv::BORDER_REPLICATE);
-    const double target_mse = 255.0 * 255.0 / std::pow(10.0, target_psnr / 10.0);
-    cv::Mat m = local > float(factor * target_mse);  // 255 where worse
-    if (cv::countNonZero(m) == 0) return {};
-    if (grow > 0) cv::dilate(m, m, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * grow + 1, 2 * grow + 1)));
-    std::vector<uint8_t> out(size_t(W) * H);
-    for (int y = 0; y < H; ++y) {
-        const uint8_t* r = m.ptr<uint8_t>(y);
-        for (int x = 0; x < W; ++x) out[size_t(y) * W + x] = r[x] ? 1 : 0;
-    }
-    return out;
 }
 
 FillLayer fill_for_target(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& fo,

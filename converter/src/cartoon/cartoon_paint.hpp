@@ -38,12 +38,4 @@ FillLayer fill_for_target(const cv::Mat& rgb, Rgb8 background, const Renderer& r
 // `threshold`, widened by `grow` pixels. Empty when no pixel does.
 std::vector<uint8_t> residual_region(const paint::ImageView& model, const Canvas& canvas, int threshold, int grow);
 
-// Where a canvas is really worse than `target_psnr` needs: pixels whose mean squared error over
-// the (2 radius + 1)² box around them exceeds `factor` times the target's mean squared error,
-// widened by `grow` pixels. Codec noise spread thinly over a frame stays out; the error that
-// keeps a frame from its target (an edge that moved, a shape that appeared) is in. Empty when
-// no pixel is.
-std::vector<uint8_t> worse_than_target(const paint::ImageView& model, const Canvas& canvas, double target_psnr,
-                                       double factor, int radius, int grow);
-
 }  // namespace spt::cartoon
