@@ -16,7 +16,7 @@ test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy ccache
            mmdebstrap time              # Blender 4.3 and 5.2 roots (tests/blender/blender_root.sh)
            emscripten node-acorn nodejs   # the web player (web/) and its Chromium test
            slurm-wlm munge iproute2     # the farm test's own Slurm cluster (tests/farm)
-           libjxl-tools webp optipng    # bench/ comparisons only
+           libjxl-tools webp optipng potrace   # bench/ comparisons only
            python3-openimageio)         # bench/color_bench.py (EXR sizes and errors)
 
 install_pkgs() {
