@@ -14,18 +14,24 @@ HEX = re.compile(r'fill="#([0-9a-fA-F]{6})"')
 GROUP = re.compile(r'<g transform="([^"]*)"[^>]*>(.*?)</g>', re.S)
 
 
-def svg_palette(svg_text):
-    """The distinct fill colours of the background <rect> and the <polygon>s of an SVG (spt export
-    of a cartoon frame: its palette), as RGB."""
-    cols, background = set(), True
+def svg_palette(svg_text, most=255):
+    """The fill colours of the background <rect> and the <polygon>s of an SVG (spt export of a
+    cartoon frame: its palette), as RGB, at most `most` of them: colours within 6 levels of a
+    more frequent one join it (a traced ink colour differs a little from region to region)."""
+    count, background = {}, True
     for line in svg_text.splitlines():
         # The first <rect> is the canvas; later ones are stamps (the residual, not the palette).
         if line.startswith("<polygon") or (background and line.startswith("<rect")):
             background = background and not line.startswith("<rect")
             m = HEX.search(line)
             if m:
-                cols.add(tuple(int(m.group(1)[i:i + 2], 16) for i in (0, 2, 4)))
-    return sorted(cols)
+                c = tuple(int(m.group(1)[i:i + 2], 16) for i in (0, 2, 4))
+                count[c] = count.get(c, 0) + 1
+    kept = []
+    for c in sorted(count, key=lambda c: (-count[c], c)):
+        if all(max(abs(a - b) for a, b in zip(c, k)) > 6 for k in kept):
+            kept.append(c)
+    return sorted(kept[:most])
 
 
 def read_rgb(png):
