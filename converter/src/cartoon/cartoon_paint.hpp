@@ -13,6 +13,16 @@
 
 namespace spt::cartoon {
 
+// How much more than the stamp painter's own the residual stamps of a cartoon must pay for
+// themselves (paint::PaintOptions::lambda times this) when painted to a PSNR target (without
+// one, lambda alone decides where painting stops, and it is left alone). A picture starts close
+// to its target after its polygons (and an inter frame's kept strokes), and the painter, drawing
+// candidates coarse to fine, would otherwise accept the first strokes that help a little, where
+// fewer that help a lot reach the target too; short of it, the painter halves lambda (to 1/64)
+// as always. Measured for sequences in inter_frame.cpp and cartoon_sequence.cpp, for stills in
+// cartoon_paint.cpp.
+constexpr double kResidualLambdaScale = 16;
+
 struct CartoonStats {
     size_t colors = 0, regions = 0, polygons = 0, vertices = 0;
     uint8_t grid = 0;

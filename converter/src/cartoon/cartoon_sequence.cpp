@@ -92,7 +92,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             // inter frames' at 16, 12 frames at 36 dB: butterfly 78,028 / 62,804 / 61,559 /
             // 59,860 bytes (its key frame 55,475 -> 35,359 at 16), taffy 399,014 / 386,954 /
             // 384,468 / 384,329, star 3,982 throughout (its polygons reach the target).
-            if (po.target_psnr > 0) po.lambda *= kSequenceLambdaScale;
+            if (po.target_psnr > 0) po.lambda *= kResidualLambdaScale;
             if (!(po.target_psnr > 0 && paint::psnr(model, canvas.rgb.data()) >= po.target_psnr)) {
                 const std::vector<uint8_t> region = residual_region(model, canvas, 24, 2);
                 if (!region.empty()) {

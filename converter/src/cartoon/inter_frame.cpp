@@ -94,13 +94,13 @@ Result<InterFrame> plan_variant(const InterInput& in, bool lenient) {
 // The new stamps, painted on the plan's canvas to the target.
 void paint_stamps(const InterInput& in, InterFrame& r) {
     Frame& f = r.frame;
-    // A stamp must pay for itself 16 times more (kSequenceLambdaScale). (12 frames at 36 dB,
+    // A stamp must pay for itself 16 times more (kResidualLambdaScale). (12 frames at 36 dB,
     // inter frames' lambda times 1 / 2 / 4 / 8 / 16 / 32 / 64: butterfly 91,611 / 85,228 / 80,717 /
     // 79,534 / 78,028 / 77,597 / 77,398 bytes, taffy 525,668 / 463,324 / 422,076 / 403,274 /
     // 399,014 / 395,991 / 396,856, star 4,122 / 4,103 / 4,055 / 4,012 / 3,982 / 3,959 / 3,911;
     // 32 and 64 paint taffy 40% slower, and 128 leaves taffy frames under the target.)
     paint::PaintOptions po = in.paint;
-    if (po.target_psnr > 0) po.lambda *= kSequenceLambdaScale;
+    if (po.target_psnr > 0) po.lambda *= kResidualLambdaScale;
     if (!(po.target_psnr > 0 && r.kept_psnr >= po.target_psnr)) {
         // (Painting first only where the kept canvas is really worse than the target needs,
         // 7 x 7 mean squared error over 4 times the target's, then wherever the error is, gave

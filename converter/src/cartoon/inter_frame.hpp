@@ -13,6 +13,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "cartoon/cartoon_paint.hpp"
 #include "cartoon/motion_field.hpp"
 #include "paint/painter.hpp"
 #include "spt/render.hpp"
@@ -44,14 +45,6 @@ struct InterFrame {
 
 Result<InterFrame> paint_inter_frame(const InterInput& in);
 
-// How much more than a still's the residual stamps of a sequence's frames must pay for
-// themselves (paint::PaintOptions::lambda times this) when painted to a PSNR target (without
-// one, lambda alone decides where painting stops, and it is left alone). A frame starts close to its target
-// after its polygons (and an inter frame's kept strokes), and the painter, drawing candidates
-// coarse to fine, would otherwise accept the first strokes that help a little, where fewer
-// that help a lot reach the target too; short of it, the painter halves lambda (to 1/64) as
-// always. Measured in inter_frame.cpp and cartoon_sequence.cpp.
-constexpr double kSequenceLambdaScale = 16;
 
 // Roughly what a frame costs in bytes, range coded: per polygon its header and vertices, per
 // stamp, per removal (measured with `spt info --json` on the butterfly: a stamp 5.6 bytes, a
