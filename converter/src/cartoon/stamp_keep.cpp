@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <iterator>
 
+#include "cartoon/mask_pixels.hpp"
+
 namespace spt::cartoon {
 
 // Passes of the keep rule: 3 measured (butterfly 12 frames: 106,023 bytes with 2, 104,694 with
@@ -10,21 +12,6 @@ namespace spt::cartoon {
 constexpr int kPasses = 3;
 
 namespace {
-
-// Calls f(px, py, i, a) for every pixel a stroke mask covers (a > 0) on a W x H canvas; i is
-// the pixel's index in the mask.
-template <class F>
-void for_each_covered(const Mask& m, int32_t W, int32_t H, F f) {
-    for (uint32_t y = 0; y < m.h; ++y) {
-        const int32_t py = m.y0 + int32_t(y);
-        if (py < 0 || py >= H) continue;
-        for (uint32_t x = 0; x < m.w; ++x) {
-            const int32_t px = m.x0 + int32_t(x);
-            const size_t i = size_t(y) * m.w + x;
-            if (m.a[i] != 0 && px >= 0 && px < W) f(px, py, i, m.a[i]);
-        }
-    }
-}
 
 // One pass: the kept old stamps (not in `removed`) that make the frame worse, increasing.
 std::vector<uint32_t> hurting_stamps(const std::vector<Stroke>& moved, const std::vector<uint32_t>& removed,
@@ -63,7 +50,7 @@ std::vector<uint32_t> hurting_stamps(const std::vector<Stroke>& moved, const std
             const Mask& m = fx[k].mask;
             const Rgba8 c = with[k].stamp.color;
             fx[k].delta.assign(size_t(m.w) * m.h * 3, 0.0f);
-            for_each_covered(m, W, H, [&](int32_t px, int32_t py, size_t i, uint8_t a) {
+            visit_covered(m, W, H, [&](int32_t px, int32_t py, size_t i, uint8_t a) {
                 const uint8_t* b = canvas.rgb.data() + (size_t(py) * W + px) * 3;
                 float* d = &fx[k].delta[i * 3];
                 d[0] = float(a) / 255.0f * float(int(c.r) - int(b[0]));
@@ -80,7 +67,7 @@ std::vector<uint32_t> hurting_stamps(const std::vector<Stroke>& moved, const std
         const bool is_cand = cand[k] >= 0 && !fx[k].delta.empty();
         if (!is_cand && !renderer.stroke_mask(with[k], m)) continue;
         const Mask& mk = is_cand ? fx[k].mask : m;
-        for_each_covered(mk, W, H, [&](int32_t px, int32_t py, size_t i, uint8_t a) {
+        visit_covered(mk, W, H, [&](int32_t px, int32_t py, size_t i, uint8_t a) {
             float& t = through[size_t(py) * W + px];
             if (is_cand) {
                 float* d = &fx[k].delta[i * 3];
@@ -98,7 +85,7 @@ std::vector<uint32_t> hurting_stamps(const std::vector<Stroke>& moved, const std
         if (cand[k] < 0 || fx[k].delta.empty()) continue;
         const Mask& mk = fx[k].mask;
         double gain = 0;  // squared error the stamp removes
-        for_each_covered(mk, W, H, [&](int32_t px, int32_t py, size_t i, uint8_t) {
+        visit_covered(mk, W, H, [&](int32_t px, int32_t py, size_t i, uint8_t) {
             const size_t p = (size_t(py) * W + px) * 3;
             const float* d = &fx[k].delta[i * 3];
             for (int ch = 0; ch < 3; ++ch) {
