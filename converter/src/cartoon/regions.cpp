@@ -185,8 +185,11 @@ Regions find_regions(const cv::Mat& rgb, cv::Mat labels, const std::vector<cv::V
         const size_t around = size_t(std::max_element(nb.begin(), nb.end()) - nb.begin());
         // Thin (most pixels on its edge) and under a quarter flat: ink, not a fill. (A fill of
         // compressed video is seldom flat either, but it is thick, and its extremes are noise.)
-        if (2 * interior < r.pixels && 4 * flat < r.pixels && nb[around] > 0)
-            r.color = ink_colour(all[size_t(c)], palette[around]);
+        if (2 * interior < r.pixels && 4 * flat < r.pixels && nb[around] > 0) {
+            r.ink_candidate = true;
+            r.ink = ink_colour(all[size_t(c)], palette[around]);
+            r.around = palette[around];
+        }
         // Filled area: the region's outer outlines drawn filled in its box, after closing gaps
         // of up to two pixels (tracing closes them too: a ring broken where its line thins
         // must still be drawn before the fill inside it).

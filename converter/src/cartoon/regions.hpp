@@ -13,6 +13,11 @@ namespace spt::cartoon {
 struct Region {
     int label = 0;             // palette index
     cv::Vec3b color;           // mean of the region's pixels away from its edge
+    // A thin region with no flat inside (small text, hairlines) may be ink rather than a fill:
+    // `ink` is the far end of its blends with `around`, the colour it lies on; the fill layer
+    // traces it in both colours and keeps the closer (fill_layer.cpp).
+    bool ink_candidate = false;
+    cv::Vec3b ink, around;
     int64_t pixels = 0;
     int64_t filled_area = 0;   // pixels inside its outer outline (holes included)
     cv::Rect box;
