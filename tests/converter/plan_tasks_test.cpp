@@ -89,7 +89,7 @@ TEST(PlanTasks, TasksFindTheCutsAndJoinToTheOneProcessPainting) {
     RunResult r = run_spt(d, {"plan", kCity, "--frames", "100-131", "-o", plan, "--max-strokes", "200",
                               "--keyframe-interval", "100", "--max-task-frames", "12", "--seed", "9", "--progress", "none"});
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.err.find("1 read, tasks cut scan"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("1 read, tasks cut scan), cuts found by the tasks, 3 shots"), std::string::npos) << r.err;
     auto p = spt::plan::read_plan(plan);
     ASSERT_TRUE(p.ok()) << p.error().message;
     ASSERT_EQ(p->shots.size(), 3u);

@@ -57,11 +57,14 @@ int cmd_plan(int argc, char** argv) {
         std::fprintf(stderr, "spt plan: %s\n", st.error().message.c_str());
         return 1;
     }
+    // A tasks plan holds no cuts: its tasks find them as they paint.
+    const std::string cuts = p->cut_scan == "tasks" ? std::string("cuts found by the tasks")
+                                                    : std::to_string(p->cuts.size() - 1) + " cuts";
     char detail[320];
     std::snprintf(detail, sizeof detail,
-                  "%llu frames %ld-%ld (%llu read, %s cut scan), %zu cuts, %zu shots, plan %s, %.2f s (%.2f ms a frame)",
+                  "%llu frames %ld-%ld (%llu read, %s cut scan), %s, %zu shots, plan %s, %.2f s (%.2f ms a frame)",
                   (unsigned long long)stats.frames, p->first, p->last, (unsigned long long)stats.decoded,
-                  p->cut_scan.c_str(), p->cuts.size() - 1, p->shots.size(),
+                  p->cut_scan.c_str(), cuts.c_str(), p->shots.size(),
                   p->id.c_str(), stats.seconds, stats.frames ? 1000.0 * stats.seconds / double(stats.frames) : 0.0);
     progress.finish(true, detail);
     if (o.progress != io::ProgressMode::Json) std::fprintf(stderr, "spt plan: %s: %s\n", o.output.c_str(), detail);
