@@ -9,6 +9,17 @@
 
 namespace spt::plan {
 
+namespace {
+
+// The last source number a non-empty --frames range names.
+long range_last(const io::FrameRange& r) {
+    long hi = r.spans.front().second;
+    for (const auto& sp : r.spans) hi = std::max(hi, sp.second);
+    return hi;
+}
+
+}  // namespace
+
 Result<uint64_t> count_video_packets(const std::string& path) {
     cv::VideoCapture cap;
     if (!cap.open(path, cv::CAP_FFMPEG, {cv::CAP_PROP_FORMAT, -1}))
@@ -44,12 +55,7 @@ Result<FrameSpan> probe_frames(const std::string& input, const std::string& fram
         Result<uint64_t> n = count_video_packets(input);
         if (!n) return n.error();
         if (*n == 0) return make_error(Code::IoError, s.what + ": no frames to plan");
-        s.last = long(*n) - 1;
-        if (!range->empty()) {
-            long hi = range->spans.front().second;
-            for (const auto& sp : range->spans) hi = std::max(hi, sp.second);
-            s.last = std::min(s.last, hi);
-        }
+        s.last = range->empty() ? long(*n) - 1 : std::min(long(*n) - 1, range_last(*range));
         if (s.last < s.first)  // the decoder gave a frame past the packets counted: a damaged file
             return make_error(Code::Corrupt, s.what + ": frame " + std::to_string(s.first) + " decodes, but the file "
                                              "holds " + std::to_string(*n) + " frames");
@@ -58,7 +64,7 @@ Result<FrameSpan> probe_frames(const std::string& input, const std::string& fram
     // A sequence or a folder: the numbers its painter walks, the range's own when one is given
     // (a missing file among them is reported or skipped by the task, as by spt paint).
     if (!range->empty()) {
-        for (const auto& sp : range->spans) s.last = std::max(s.last, sp.second);
+        s.last = range_last(*range);
         return s;
     }
     Result<std::vector<io::SequenceFile>> files = io::list_sequence(input, *range);
