@@ -63,6 +63,9 @@ Status same_canvas(const Header& a, const Header& b, const std::string& name, co
         return differ("the colour encoding", std::to_string(int(a.color)), std::to_string(int(b.color)));
     if (a.alpha != b.alpha)
         return differ("the alpha channel", a.alpha ? "alpha" : "no alpha", b.alpha ? "alpha" : "no alpha");
+    if (a.curve_grid != b.curve_grid)  // a curve's record and stream have a grid exactly with the flag
+        return differ("the curve_grid flag (anti-aliased curves)", a.curve_grid ? "set" : "not set",
+                      b.curve_grid ? "set" : "not set");
     auto rgb = [](const Rgb8& c) { return std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b); };
     if (!(a.background == b.background)) return differ("the background", rgb(a.background), rgb(b.background));
     if (!(a.background_lo == b.background_lo))

@@ -38,7 +38,7 @@ std::vector<uint8_t> encode_head(const Header& h) {
     ByteSink s;
     s.u16(h.version_major);
     s.u16(h.version_minor);
-    s.u32(h.alpha ? kHeadFlagAlpha : 0);
+    s.u32((h.alpha ? kHeadFlagAlpha : 0) | (h.curve_grid ? kHeadFlagCurveGrid : 0));
     s.u32(h.width);
     s.u32(h.height);
     s.u32(h.fps.num);
@@ -68,8 +68,9 @@ Status decode_head(const uint8_t* p, size_t n, uint64_t off, const Limits& lim, 
     if (h.version_major != 1)
         return c.error(Code::Unsupported, "format major version " + std::to_string(h.version_major) + " is not 1");
     SPT_TRY(c.u32(flags, "flags"));
-    if (flags & ~kHeadFlagAlpha) return c.error(Code::Unsupported, "reserved flags are not 0");
+    if (flags & ~(kHeadFlagAlpha | kHeadFlagCurveGrid)) return c.error(Code::Unsupported, "reserved flags are not 0");
     h.alpha = (flags & kHeadFlagAlpha) != 0;
+    h.curve_grid = (flags & kHeadFlagCurveGrid) != 0;
     SPT_TRY(c.u32(h.width, "width"));
     SPT_TRY(c.u32(h.height, "height"));
     SPT_TRY(c.u32(h.fps.num, "fps_num"));

@@ -20,6 +20,7 @@ constexpr size_t kFrameHeaderBytes = 8; // FRAM: frame_index, frame_type, coding
 constexpr size_t kIendPayload = 12;
 constexpr size_t kIndexEntryBytes = 16;
 constexpr uint32_t kHeadFlagAlpha = 1;  // HEAD flags bit 0: the canvas has alpha (format 1.3)
+constexpr uint32_t kHeadFlagCurveGrid = 2;  // HEAD flags bit 1: curves carry a grid (format 1.4)
 
 inline bool is_type(const uint8_t* t, const char* s) {
     return t[0] == uint8_t(s[0]) && t[1] == uint8_t(s[1]) && t[2] == uint8_t(s[2]) && t[3] == uint8_t(s[3]);

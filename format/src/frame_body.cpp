@@ -7,7 +7,7 @@ namespace spt::detail {
 void encode_frame_body(const Frame& f, Coding coding, const StreamShape& shape, std::vector<uint8_t>& out,
                        BodySplit* split, FieldStats* stats) {
     // Coding 2 needs the writer's canvas state (encode_replay_body); without it, coding 1.
-    if (coding == Coding::Stored) encode_stored_body(f, shape.linear, out, split, stats);
+    if (coding == Coding::Stored) encode_stored_body(f, shape, out, split, stats);
     else encode_range_body(f, shape, out, split, stats);
 }
 

@@ -61,7 +61,8 @@ Status measure_frame_body(FrameType type, Coding coding, uint64_t body_size, con
                           const DecodeContext& ctx, BodySplit& split);
 
 // Coding 0.
-void encode_stored_body(const Frame& f, bool linear, std::vector<uint8_t>& out, BodySplit* split, FieldStats* stats);
+void encode_stored_body(const Frame& f, const StreamShape& shape, std::vector<uint8_t>& out, BodySplit* split,
+                        FieldStats* stats);
 // Reuses the Strokes already in out.added (a player decodes frame after frame into one
 // Frame); sets *checked to the number of leading strokes it found valid (check_frame need
 // not check those again).

@@ -92,10 +92,14 @@ void rasterize_map_row(const InverseMap& m, const Template& t, int64_t y, int64_
 // The inverse map of a stamp whose centre pixel is (cx, cy), in canvas coordinates.
 InverseMap stamp_inverse_at(uint32_t w, uint32_t h, Orientation o, int64_t cx, int64_t cy, uint8_t supersample = 0);
 
-// SPEC 8.5: coverage (0 or 255) of a curve over the pixel box [x0, x1] x [y0, y1], row-major
+// SPEC 8.5: coverage of a curve over the pixel box [x0, x1] x [y0, y1], row-major
 // into `out` (zeroed by the callee). Pixels of the box outside the curve get 0.
 void rasterize_curve(const CurveStroke& s, int64_t x0, int64_t y0, int64_t x1, int64_t y1,
                      uint8_t* out);
+// The same for a curve with a grid (supersample >= 2): coverage (255 k + g^2/2) / g^2 of the k
+// of its g x g samples that some segment covers (format 1.4). raster_curve_aa.cpp.
+void rasterize_curve_aa(const CurveStroke& s, int64_t x0, int64_t y0, int64_t x1, int64_t y1,
+                        uint8_t* out);
 // Conservative pixel box of a curve (every covered pixel is inside it).
 void curve_box(const CurveStroke& s, int64_t& x0, int64_t& y0, int64_t& x1, int64_t& y1);
 

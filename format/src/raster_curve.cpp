@@ -1,32 +1,16 @@
-// SPEC 8.5: curve strokes. A pixel centre is covered when its distance to some segment is at
-// most the half width interpolated at the segment's closest point; the union of all segments
-// is one coverage mask, composited once.
+// SPEC 8.5: curve strokes sampled at pixel centres (grid 0). A pixel centre is covered when its
+// distance to some segment is at most the half width interpolated at the segment's closest
+// point; the union of all segments is one coverage mask, composited once. Curves with a grid
+// are raster_curve_aa.cpp's.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
+#include "curve_segment.hpp"
 #include "raster.hpp"
 
 namespace spt::raster {
 namespace {
-
-constexpr int64_t kT = int64_t(1) << 24;  // segment parameter t in Q24
-
-// floor(t * 2^24 / len2) for 0 < t < len2 <= 2^53 without overflowing int64.
-int64_t segment_param(int64_t t, int64_t len2) {
-    if (t < (int64_t(1) << 39)) return (t << 24) / len2;
-    int64_t q = 0, r = t;  // binary long division, one quotient bit per step; r < len2
-    for (int k = 0; k < 24; ++k) {
-        r <<= 1;
-        q <<= 1;
-        if (r >= len2) { r -= len2; q |= 1; }
-    }
-    return q;
-}
-
-struct Segment {
-    int64_t x0, y0, dx, dy, len2, w0, dw;
-};
 
 // Is the pixel centre (X, Y) (Q4) covered by the segment?
 bool covers(const Segment& s, int64_t X, int64_t Y) {
@@ -53,7 +37,7 @@ void curve_box(const CurveStroke& s, int64_t& x0, int64_t& y0, int64_t& x1, int6
     for (const CurvePoint& p : s.points) {
         // A covered centre is within half the larger width of its segment (plus the 1/256
         // rounding of the closest point), so half of every width plus one Q4 unit is enough.
-        const int64_t m = (int64_t(p.width) + 1) / 2 + 1;
+        const int64_t m = (int64_t(p.width) + 1) / 2 + 1 + curve_sample_reach(s);
         lo_x = std::min<int64_t>(lo_x, p.x - m);
         hi_x = std::max<int64_t>(hi_x, p.x + m);
         lo_y = std::min<int64_t>(lo_y, p.y - m);
@@ -67,6 +51,7 @@ void curve_box(const CurveStroke& s, int64_t& x0, int64_t& y0, int64_t& x1, int6
 
 void rasterize_curve(const CurveStroke& s, int64_t bx0, int64_t by0, int64_t bx1, int64_t by1,
                      uint8_t* out) {
+    if (s.supersample >= 2) return rasterize_curve_aa(s, bx0, by0, bx1, by1, out);
     const int64_t bw = bx1 - bx0 + 1;
     std::memset(out, 0, size_t(bw * (by1 - by0 + 1)));
     const size_t n = s.points.size();

@@ -84,6 +84,8 @@ Status RendererImpl::check(const Stroke& s) const {
         case StrokeKind::Curve: {
             const CurveStroke& t = s.curve;
             if (t.points.empty()) return bad("curve stroke: no points");
+            if (t.supersample == 1 || t.supersample > 16)
+                return bad("curve stroke: supersampling " + std::to_string(t.supersample) + " is not 0 or 2..16");
             for (size_t i = 0; i < t.points.size(); ++i) {
                 const CurvePoint& p = t.points[i];
                 if (!in_range(p.x, kMaxCoord) || !in_range(p.y, kMaxCoord) || p.width > kMaxCurveWidth)

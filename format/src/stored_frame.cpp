@@ -11,7 +11,8 @@
 namespace spt::detail {
 namespace {
 
-void put_stroke(ByteSink& s, const Stroke& st, bool linear, FieldStats* stats) {
+void put_stroke(ByteSink& s, const Stroke& st, const StreamShape& shape, FieldStats* stats) {
+    const bool linear = shape.linear;
     auto add = [&](Field f, double bytes) { if (stats) (*stats)[f] += 8.0 * bytes; };
     s.u8(uint8_t(st.kind));
     add(Field::Kind, 1);
@@ -40,10 +41,11 @@ void put_stroke(ByteSink& s, const Stroke& st, bool linear, FieldStats* stats) {
         case StrokeKind::Curve: {
             const auto& c = st.curve;
             rgba(c.color);
+            if (shape.curve_grid) s.u8(c.supersample);  // format 1.4 (SPEC.md 6)
             s.u32(uint32_t(c.points.size()));
             for (const auto& p : c.points) { s.i32(p.x); s.i32(p.y); s.u32(p.width); }
             add(Field::Position, 8);
-            add(Field::Geometry, 4 + 12.0 * double(c.points.size()) - 8);
+            add(Field::Geometry, (shape.curve_grid ? 5 : 4) + 12.0 * double(c.points.size()) - 8);
             break;
         }
         case StrokeKind::Polygon: {
@@ -92,6 +94,13 @@ Status get_stroke(ByteCursor& c, Stroke& st, const DecodeContext& ctx, uint32_t 
             st.kind = StrokeKind::Curve;
             auto& cv = st.curve;
             SPT_TRY(rgba(cv.color));
+            cv.supersample = 0;
+            if (ctx.shape.curve_grid) {  // format 1.4: the record has a grid (SPEC.md 6)
+                SPT_TRY(c.u8(cv.supersample, "curve supersampling"));
+                if (cv.supersample == 1 || cv.supersample > 16)
+                    return c.error(Code::Unsupported, "stroke " + std::to_string(i) + ": curve supersampling " +
+                                                          std::to_string(cv.supersample) + " is reserved");
+            }
             uint32_t n;
             SPT_TRY(c.u32(n, "curve point count"));
             if (n > ctx.limits.max_curve_points)
@@ -177,7 +186,8 @@ bool stored_key_stamps(const uint8_t* body, size_t n, const Limits& limits, Stam
     return true;
 }
 
-void encode_stored_body(const Frame& f, bool linear, std::vector<uint8_t>& out, BodySplit* split, FieldStats* stats) {
+void encode_stored_body(const Frame& f, const StreamShape& shape, std::vector<uint8_t>& out, BodySplit* split,
+                        FieldStats* stats) {
     ByteSink s;
     size_t motion_bytes = 0;
     if (f.type == FrameType::Inter) {
@@ -194,7 +204,7 @@ void encode_stored_body(const Frame& f, bool linear, std::vector<uint8_t>& out, 
     }
     s.u32(uint32_t(f.added.size()));
     if (stats) (*stats)[Field::Count] += 32.0;
-    for (const auto& st : f.added) put_stroke(s, st, linear, stats);
+    for (const auto& st : f.added) put_stroke(s, st, shape, stats);
     if (split) *split = BodySplit::of(s.size(), motion_bytes, uint32_t(f.added.size()), uint32_t(f.removed.size()));
     out.insert(out.end(), s.bytes().begin(), s.bytes().end());
 }
@@ -270,7 +280,7 @@ Status decode_stored_body(FrameType type, const uint8_t* p, size_t n, const Deco
     if (ctx.stats) {
         BodySplit dummy;
         std::vector<uint8_t> scratch;
-        encode_stored_body(out, ctx.shape.linear, scratch, &dummy, ctx.stats);  // exact byte accounting
+        encode_stored_body(out, ctx.shape, scratch, &dummy, ctx.stats);  // exact byte accounting
     }
     if (split) *split = BodySplit::of(n, motion_bytes, added, uint32_t(out.removed.size()));
     return {};

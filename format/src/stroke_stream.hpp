@@ -83,6 +83,8 @@ struct StrokeCoderState {
     BitTree matrix_shift;
     UIntModel points;
     SIntModel width0, dx, dy, dw;
+    uint16_t curve_same_aa;           // a curve's grid, format 1.4 with the curve_grid flag
+    uint16_t curve_aa[32];
     PolygonModels poly;               // polygons (format 1.2, SPEC.md 7.4 step 5)
     // predictors
     int prev_kind = 0;
@@ -90,12 +92,14 @@ struct StrokeCoderState {
     int prev_orient[16] = {};
     Rgb8 prev_color{128, 128, 128};
     int64_t prev_width0 = 0;
+    uint32_t prev_curve_aa = 0;
     uint32_t grid_w = 0, grid_h = 0;
     std::vector<uint32_t> grid;       // 0 = empty, else 0x01RRGGBB
 
     explicit StrokeCoderState(const StreamShape& sh) : shape(sh) {
         for (int i = 0; i < 4; ++i) kind0[i] = kind1[i] = kind2[i] = kProbInit;
-        same_set = opaque = kProbInit;
+        same_set = opaque = curve_same_aa = kProbInit;
+        for (auto& q : curve_aa) q = kProbInit;
         set_tree.reset(4);
         const int tb = sh.templates ? bit_length(sh.templates - 1) : 0;
         const int ob = sh.orientations ? bit_length(sh.orientations - 1) : 0;
@@ -403,6 +407,17 @@ SPT_CODER_INLINE bool code_stroke(C& c, StrokeCoderState& st, Stroke& s, const L
     c.set_field(Field::Geometry);
     const uint64_t n = code_uint(c, st.points, cv.points.empty() ? 0 : cv.points.size() - 1) + 1;
     if (n > lim.max_curve_points) { err.set("curve of " + std::to_string(n) + " points exceeds the limit"); return false; }
+    if (sh.curve_grid) {  // format 1.4 (SPEC.md 7.4 step 4)
+        uint32_t aa = st.prev_curve_aa;
+        if (c.bit(st.curve_same_aa, cv.supersample != st.prev_curve_aa ? 1 : 0)) {
+            aa = code_tree(c, st.curve_aa, 5, cv.supersample);
+            if (aa == st.prev_curve_aa || aa == 1 || aa > 16) { err.set("curve supersampling " + std::to_string(aa) + " is invalid"); return false; }
+        }
+        cv.supersample = uint8_t(aa);
+        st.prev_curve_aa = aa;
+    } else {
+        cv.supersample = 0;
+    }
     cv.points.resize(size_t(n));  // the encoder's size already; the decoder's new
     auto& p0 = cv.points[0];
     c.set_field(Field::Position);

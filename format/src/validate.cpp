@@ -31,6 +31,9 @@ Status check_header(const Header& h, const Limits& lim, Code code, const std::st
     if (!h.plain_color() && h.version_minor < kAlphaLinearMinorVersion)
         return fail(code, where, "an alpha canvas or colour encoding 1 needs format 1.3, the header says 1." +
                     std::to_string(h.version_minor), off);
+    if (h.curve_grid && h.version_minor < kCurveGridMinorVersion)
+        return fail(code, where, "anti-aliased curves (flag curve_grid) need format 1.4, the header says 1." +
+                    std::to_string(h.version_minor), off);
     if (h.color == ColorEncoding::Srgb8 && h.background_lo != Rgb8{0, 0, 0})
         return fail(code, where, "background low bytes are set in colour encoding 0", off);
     if (h.color == ColorEncoding::LinearHalf)
@@ -101,6 +104,10 @@ Status check_stroke(const Stroke& s, const StreamShape& sh, const Limits& lim, C
         case StrokeKind::Curve: {
             const auto& c = s.curve;
             if (c.points.empty()) return fail(code, where, "curve has no points", off);
+            if (c.supersample == 1 || c.supersample > 16)
+                return fail(Code::Unsupported, where, "curve supersampling " + std::to_string(c.supersample) + " is reserved", off);
+            if (c.supersample != 0 && !sh.curve_grid)
+                return fail(code, where, "curve has a supersampling grid, which needs the header flag curve_grid (format 1.4)", off);
             if (c.points.size() > lim.max_curve_points)
                 return fail(Code::LimitExceeded, where, "curve has " + std::to_string(c.points.size()) + " points, above the limit", off);
             for (const auto& p : c.points) {
@@ -190,14 +197,15 @@ uint64_t curve_render_work(const CurveStroke& c, uint32_t canvas_width, uint32_t
         const CurvePoint& p = c.points[k];
         const CurvePoint& q = c.points[k + 1 < n ? k + 1 : k];
         // The segment's box of SPEC 8.5 (as raster_curve.cpp evaluates it), clipped to the canvas.
-        const int64_t m = (std::max<int64_t>(p.width, q.width) + 1) / 2 + 1;
+        const int64_t m = (std::max<int64_t>(p.width, q.width) + 1) / 2 + 1 + (c.supersample >= 2 ? 8 : 0);
         const int64_t x0 = std::max<int64_t>(-floor16(-(std::min<int64_t>(p.x, q.x) - m - 8)), 0);
         const int64_t x1 = std::min<int64_t>(floor16(std::max<int64_t>(p.x, q.x) + m - 8), int64_t(canvas_width) - 1);
         const int64_t y0 = std::max<int64_t>(-floor16(-(std::min<int64_t>(p.y, q.y) - m - 8)), 0);
         const int64_t y1 = std::min<int64_t>(floor16(std::max<int64_t>(p.y, q.y) + m - 8), int64_t(canvas_height) - 1);
         if (x1 >= x0 && y1 >= y0) work += uint64_t(x1 - x0 + 1) * uint64_t(y1 - y0 + 1);
     }
-    return work;
+    const uint64_t side = c.supersample >= 2 ? c.supersample : 1;
+    return work * side * side;
 }
 
 uint64_t fill_render_work(const Stroke& s, const Header& h, const std::vector<Template>& templates) {

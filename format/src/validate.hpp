@@ -26,9 +26,10 @@ struct StreamShape {
     // Colour encoding 1: every stroke colour carries 16-bit codes (SPEC.md 6, 7.4).
     bool linear = false;
     bool alpha = false;  // HEAD flag: frame coding 2 is not defined for such canvases (SPEC.md 7.7)
+    bool curve_grid = false;  // HEAD flag: every curve record and coded curve has a grid (format 1.4)
     static StreamShape of(const Header& h, size_t templates) {
         return {h.width, h.height, uint32_t(h.sets.size()), uint32_t(h.orientations.size()), uint32_t(templates),
-                h.version_minor, h.color == ColorEncoding::LinearHalf, h.alpha};
+                h.version_minor, h.color == ColorEncoding::LinearHalf, h.alpha, h.curve_grid};
     }
     bool plain_color() const { return !linear && !alpha; }
     bool has_polygons() const { return version_minor >= 2; }

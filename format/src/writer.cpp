@@ -260,11 +260,12 @@ Result<std::unique_ptr<Writer>> Writer::create(const std::string& path, const St
     lim.max_width = lim.max_height = 0xFFFFFFFFu;
     lim.max_pixels = ~uint64_t(0);
     lim.max_template_side = detail::kMaxTemplateSide;
-    // An alpha canvas or colour encoding 1 is format 1.3: the writer says so itself, as it does
-    // for coding 2 and polygons.
+    // An alpha canvas or colour encoding 1 is format 1.3, anti-aliased curves 1.4: the writer
+    // says so itself, as it does for coding 2 and polygons.
     StreamInfo checked_info = info;
     Header& hd = checked_info.header;
     if (!hd.plain_color() && hd.version_minor < kAlphaLinearMinorVersion) hd.version_minor = kAlphaLinearMinorVersion;
+    if (hd.curve_grid && hd.version_minor < kCurveGridMinorVersion) hd.version_minor = kCurveGridMinorVersion;
     if (auto st = detail::check_header(hd, lim, Code::InvalidArgument, path + ": header", 0); !st) return st.error();
     if (info.templates.size() > 255)
         return make_error(Code::InvalidArgument, path + ": " + std::to_string(info.templates.size()) + " templates, at most 255");

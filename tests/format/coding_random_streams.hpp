@@ -29,6 +29,9 @@ struct StreamShapeOptions {
     // Polygon strokes too (format 1.2). Off by default, so that the streams of the golden files
     // (tests/format/make_golden.cpp) stay what they were.
     bool polygons = false;
+    // Anti-aliased curves (format 1.4): the header gets the curve_grid flag and curves random
+    // grids. Off by default for the same reason.
+    bool curve_grid = false;
 };
 
 inline Stroke random_stroke(std::mt19937_64& rng, const StreamInfo& info, bool painter_like, int set_hint,
@@ -90,6 +93,7 @@ inline Stroke random_stroke(std::mt19937_64& rng, const StreamInfo& info, bool p
         x += int32_t(uni(-200, 200)); y += int32_t(uni(-200, 200));
         w = uint32_t(std::max<int64_t>(0, int64_t(w) + uni(-30, 30)));
     }
+    if (h.curve_grid) c.supersample = uint8_t(uni(0, 2) ? 0 : uni(2, 16));  // drawn only then: other streams keep their values
     return Stroke::make_curve(std::move(c));
 }
 
@@ -132,6 +136,10 @@ inline RandomStream make_random_stream(uint64_t seed, const StreamShapeOptions& 
         rs.info.templates.push_back(t);
     }
     rs.info.metadata = {{"software", "spt tests"}, {"painter.seed", std::to_string(seed)}};
+    if (o.curve_grid) {
+        h.curve_grid = true;
+        h.version_minor = kCurveGridMinorVersion;
+    }
     size_t live = 0;
     for (int fi = 0; fi < o.frames; ++fi) {
         Frame f;

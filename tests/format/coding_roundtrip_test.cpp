@@ -103,6 +103,48 @@ TEST(CodingRoundTrip, PolygonStreams) {
         }
 }
 
+// Anti-aliased curves (format 1.4) among every other kind, in both codings: curves carry their
+// grids through the stored record and the range-coded stream, and the file says 1.4.
+TEST(CodingRoundTrip, CurveGridStreams) {
+    StreamShapeOptions o;
+    o.polygons = true;
+    o.curve_grid = true;
+    int gridded = 0;
+    for (uint64_t seed = 500; seed < 530; ++seed) {
+        RandomStream rs = make_random_stream(seed, o);
+        for (const Frame& f : rs.frames)
+            for (const Stroke& s : f.added) gridded += s.kind == StrokeKind::Curve && s.curve.supersample != 0;
+        for (Coding coding : {Coding::Stored, Coding::Range}) check_stream(rs, seed, coding);
+    }
+    EXPECT_GT(gridded, 100);
+}
+
+// The writer refuses a curve with a grid in a file without the curve_grid flag (its record and
+// stream would have no room for it), names the stroke, and raises a flagged header to 1.4.
+TEST(CodingRoundTrip, CurveGridNeedsTheFlag) {
+    CurveStroke c;
+    c.supersample = 4;
+    c.points = {{80, 80, 40}, {200, 90, 30}};
+    RandomStream rs = one_frame_stream(20, 10, {Stroke::make_curve(c)});
+    const std::string path = temp_path("curve-grid.spt");
+    for (Coding coding : {Coding::Stored, Coding::Range}) {
+        const Status st = write_stream(path, rs, coding);
+        ASSERT_FALSE(st.ok());
+        EXPECT_NE(st.error().message.find("curve_grid"), std::string::npos) << st.error().message;
+    }
+    rs.info.header.curve_grid = true;
+    for (Coding coding : {Coding::Stored, Coding::Range}) {
+        ASSERT_TRUE(write_stream(path, rs, coding).ok());
+        auto r = Reader::open(path);
+        ASSERT_TRUE(r.ok()) << r.error().message;
+        EXPECT_EQ((*r)->info().header.version_minor, kCurveGridMinorVersion);
+        EXPECT_TRUE((*r)->info().header.curve_grid);
+        auto s = (*r)->strokes_at(0);
+        ASSERT_TRUE(s.ok()) << s.error().message;
+        EXPECT_EQ((**s)[0].curve.supersample, 4);
+    }
+}
+
 // A stream that gets its first polygon after range-coded frames without curves is raised to 1.2
 // in place; one that range-coded a curve first is refused, with a message saying why.
 TEST(CodingRoundTrip, WriterRaisesVersionForPolygons) {

@@ -16,8 +16,10 @@ inline void put32(std::vector<uint8_t>& b, uint32_t v) {
     for (int i = 0; i < 4; ++i) b.push_back(uint8_t(v >> (8 * i)));
 }
 
-// `linear`: colour encoding 1, whose records carry the low bytes of each code (SPEC.md 6).
-inline std::vector<uint8_t> canonical_stored_bytes(const std::vector<Stroke>& live, bool linear = false) {
+// `linear`: colour encoding 1, whose records carry the low bytes of each code (SPEC.md 6);
+// `curve_grid`: the HEAD flag of format 1.4, whose curve records carry their grid.
+inline std::vector<uint8_t> canonical_stored_bytes(const std::vector<Stroke>& live, bool linear = false,
+                                                   bool curve_grid = false) {
     std::vector<uint8_t> b;
     put32(b, uint32_t(live.size()));
     auto rgba = [&](const Rgba8& c) {
@@ -42,6 +44,7 @@ inline std::vector<uint8_t> canonical_stored_bytes(const std::vector<Stroke>& li
             for (const auto& p : s.polygon.points) { put32(b, uint32_t(p.x)); put32(b, uint32_t(p.y)); }
         } else {
             rgba(s.curve.color);
+            if (curve_grid) b.push_back(s.curve.supersample);
             put32(b, uint32_t(s.curve.points.size()));
             for (const auto& p : s.curve.points) { put32(b, uint32_t(p.x)); put32(b, uint32_t(p.y)); put32(b, p.width); }
         }

@@ -50,7 +50,7 @@ TEST(GoldenConformance, EveryManifestFrameDecodesToItsHash) {
         ASSERT_TRUE(s.ok()) << s.error().message;
         EXPECT_EQ((*s)->size(), r.strokes);
         const bool linear = rd->info().header.color == ColorEncoding::LinearHalf;
-        EXPECT_EQ(hex64(fnv1a64(canonical_stored_bytes(**s, linear))), r.hash);
+        EXPECT_EQ(hex64(fnv1a64(canonical_stored_bytes(**s, linear, rd->info().header.curve_grid))), r.hash);
     }
 }
 

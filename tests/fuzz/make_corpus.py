@@ -41,17 +41,19 @@ for f in sorted(golden.glob("*.spt")):
             w, h = struct.unpack_from("<II", p, 8)
             sets, orients = p[32], p[33]
             minor = struct.unpack_from("<H", p, 2)[0]
-            head = (sets, orients, w, h, minor, p[28] == 1)
+            curve_grid = bool(struct.unpack_from("<I", p, 4)[0] & 2)
+            head = (sets, orients, w, h, minor, p[28] == 1, curve_grid)
         elif t == "TMPL":
             ntmpl += 1
             put("template", f"{f.stem}-{ntmpl}", p)
         elif t == "FRAM" and p[5] == 1 and head:
-            sets, orients, w, h, minor, linear = head
+            sets, orients, w, h, minor, linear, curve_grid = head
             body = p[8:]
             if p[4] == 0:
                 # Bit 7 of the first byte: a format 1.2 stream (polygon strokes, SPEC.md 7.4);
-                # bit 6: colour encoding 1 (format 1.3, colour low bytes).
-                first = (sets - 1) | (0x40 if linear else 0x80 if minor >= 2 else 0)
+                # bit 6: colour encoding 1 (format 1.3, colour low bytes); bit 5: curves with a
+                # grid (format 1.4).
+                first = (sets - 1) | (0x40 if linear else 0x80 if minor >= 2 else 0) | (0x20 if curve_grid else 0)
                 prefix = bytes([first, orients - 1, ntmpl]) + struct.pack("<HH", w - 1, h - 1)
                 put("strokes", f"{f.stem}-{i}", prefix + body)
             else:

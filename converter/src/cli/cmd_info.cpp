@@ -70,7 +70,7 @@ int cmd_info(int argc, char** argv) {
             "unknown), frames_found, first_frame_number (the source's number of frame 0, SPEC.md 3.3; 0 "
             "when the file has none), duration_seconds, color (\"srgb8\" or \"linear-half\"), color_encoding "
             "{id (0, 1), name (\"8-bit sRGB\", \"scene-linear half float\")}, alpha (true: an alpha canvas, "
-            "format 1.3), background [r, g, b] (the high bytes in colour encoding 1), background_codes [r, g, b] "
+            "format 1.3), curve_grid (true: curves carry a supersampling grid, anti-aliased, format 1.4), background [r, g, b] (the high bytes in colour encoding 1), background_codes [r, g, b] "
             "and background_linear [r, g, b] (colour encoding 1: the 16-bit half codes and their values), sets "
             "[{width, height}], orientations [{cos_q14, sin_q14, degrees}], templates [{kind, "
             "name, width, height}], metadata {key: value}, rois [{first_frame, last_frame, x, y, "
@@ -154,6 +154,7 @@ int cmd_info(int argc, char** argv) {
         j.kv("color", color);
         j.key("color_encoding").obj().kv("id", uint32_t(h.color)).kv("name", encoding_text).end();
         j.kv("alpha", h.alpha);
+        j.kv("curve_grid", h.curve_grid);
         j.key("background").arr().integer(h.background.r).integer(h.background.g).integer(h.background.b).end();
         if (linear) {
             j.key("background_codes").arr();
@@ -231,6 +232,7 @@ int cmd_info(int argc, char** argv) {
             std::printf("#%02x%02x%02x", h.background.r, h.background.g, h.background.b);
         std::printf("%s\n", h.alpha ? " (shown behind the transparent canvas)" : "");
     }
+    if (h.curve_grid) std::printf("curves      carry a supersampling grid (anti-aliased, format 1.4)\n");
     std::printf("frames      %zu found", frames.size());
     if (h.frame_count != kUnknownFrameCount) std::printf(" (header says %u)", h.frame_count);
     if (fps > 0) std::printf(", %.2f s", double(frames.size()) / fps);

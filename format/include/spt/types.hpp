@@ -103,9 +103,12 @@ struct CurvePoint {
     friend bool operator==(const CurvePoint&, const CurvePoint&) = default;
 };
 
-// A polyline with per-point width and one colour (hand-drawn or curved-stroke painters).
+// A polyline with per-point width and one colour (hand-drawn or curved-stroke painters, a
+// cartoon's drawn lines), sampled at pixel centres or, format 1.4, on an N x N grid per pixel
+// (anti-aliased edges, SPEC.md 4 and 8.5). A grid needs Header::curve_grid.
 struct CurveStroke {
     Rgba8 color;
+    uint8_t supersample = 0;  // 0: pixel centres; 2..16: N x N samples per pixel (format 1.4)
     std::vector<CurvePoint> points;
     friend bool operator==(const CurveStroke&, const CurveStroke&) = default;
 };
@@ -226,6 +229,8 @@ enum class ColorEncoding : uint8_t {
 const char* color_encoding_name(ColorEncoding e);
 // First format minor version with alpha canvases and colour encoding 1.
 constexpr uint16_t kAlphaLinearMinorVersion = 3;
+// First format minor version with anti-aliased curves (HEAD flag curve_grid).
+constexpr uint16_t kCurveGridMinorVersion = 4;
 
 constexpr uint32_t kUnknownFrameCount = 0xFFFFFFFFu;
 
@@ -240,6 +245,10 @@ struct Header {
     // transparent, colour channels premultiplied, and `background` is only the colour a viewer
     // shows behind it (SPEC.md 8).
     bool alpha = false;
+    // HEAD flags bit 1 (format 1.4): every curve carries a supersampling grid (SPEC.md 4, 6,
+    // 7.4). A writer needs it before the first curve with a grid; files without it keep the
+    // curve records and streams of format 1.0 .. 1.3.
+    bool curve_grid = false;
     Rgb8 background{255, 255, 255};
     // Colour encoding 1: the low bytes of the background's 16-bit codes (0 otherwise).
     Rgb8 background_lo{0, 0, 0};
