@@ -35,7 +35,8 @@ def main(argv):
             data = f.read()
         decoded = decode_frames(data)
         for index, live in decoded:
-            line = f"{index} {len(live)} {live_hash(live, decoded.header.color_encoding == 1):016x}"
+            h = decoded.header
+            line = f"{index} {len(live)} {live_hash(live, h.color_encoding == 1, h.curve_grid):016x}"
             if with_render:
                 canvas = render(decoded.header, decoded.templates, live)
                 line += f" {fnv1a64(canvas.frame_bytes()):016x}"

@@ -27,6 +27,7 @@ class Header:
     frame_count: int = 0
     background: tuple = (0, 0, 0)      # encoding 1: the high bytes of the three codes
     alpha: bool = False                # HEAD flags bit 0 (format 1.3): an alpha canvas
+    curve_grid: bool = False           # HEAD flags bit 1 (format 1.4): curves carry a grid
     color_encoding: int = 0            # 0 8-bit sRGB, 1 scene-linear half codes (format 1.3)
     background_lo: tuple = (0, 0, 0)   # encoding 1: the low bytes of the background's codes
     sets: list = field(default_factory=list)          # (width, height) per set
@@ -89,9 +90,10 @@ def decode_head(payload):
     if h.version_major != 1:
         fail("Unsupported", f"format major version {h.version_major}")
     flags = r.u32("flags")
-    if flags & ~1:
-        fail("Unsupported", "HEAD flags bits 1..31 are reserved")
+    if flags & ~3:
+        fail("Unsupported", "HEAD flags bits 2..31 are reserved")
     h.alpha = flags & 1 == 1
+    h.curve_grid = flags & 2 == 2
     h.width = r.u32("width")
     h.height = r.u32("height")
     h.fps = (r.u32("fps_num"), r.u32("fps_den"))
@@ -128,6 +130,8 @@ def decode_head(payload):
             fail("Corrupt", "a background code is above 0x7BFF")
     if (h.alpha or h.color_encoding == 1) and h.version_minor < 3:
         fail("Corrupt", "an alpha canvas or colour encoding 1 needs version_minor 3")
+    if h.curve_grid and h.version_minor < 4:
+        fail("Corrupt", "the curve_grid flag needs version_minor 4")
     r.end()
     return h
 

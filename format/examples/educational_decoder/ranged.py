@@ -129,12 +129,14 @@ class StrokeStream:
         self.matrix_shift = Tree(3)
         self.points = UInt()
         self.width0, self.dx, self.dy, self.dw = SInt(), SInt(), SInt(), SInt()
+        self.curve_same_aa, self.curve_aa = Context(), Tree(5)  # format 1.4, curve_grid files
         # predictors
         self.prev_kind = 0
         self.prev_set = 0
         self.prev_orient = [0] * 16
         self.prev_color = (128, 128, 128)
         self.prev_width0 = 0
+        self.prev_curve_aa = 0
         self.grid_cols, self.grid_rows = -(-W // 8), -(-H // 8)
         self.grid = {}  # written colour cells: (col, row) -> (r, g, b)
         self.polygon_state = None  # contexts of 7.4 step 5, made by polygon.py on first use
@@ -265,6 +267,14 @@ class StrokeStream:
         n = 1 + rc.uint(self.points)
         if n > 1 << 16:
             fail("LimitExceeded", f"{self.what}: curve of {n} points")
+        grid = 0
+        if self.header.curve_grid:  # format 1.4: coded only in a file with the HEAD flag
+            grid = self.prev_curve_aa
+            if rc.flag(self.curve_same_aa):
+                grid = rc.tree(self.curve_aa)
+                if grid == self.prev_curve_aa or grid == 1 or grid > 16:
+                    self.fail(f"curve grid {grid}")
+            self.prev_curve_aa = grid
         x, y = self.position(2, 0), self.position(2, 1)
         w = self.prev_width0 + rc.sint(self.width0)
         if not 0 <= w <= 1 << 16:
@@ -281,7 +291,7 @@ class StrokeStream:
                 self.fail("curve width out of range")
             points.append([x, y, w])
         rgba, lo = self.colour(0, points[0][0], points[0][1])
-        return Curve(rgba, points, lo=lo)
+        return Curve(rgba, points, lo=lo, grid=grid)
 
     def polygon(self):
         grid, vertices = decode_polygon(self)

@@ -176,38 +176,47 @@ def affine_coverage(header, templates, s):
 
 # ---- 8.5 curves ----
 
-def segment_covers(X, Y, p0, p1):
+def segment_covers(Xs, Ys, p0, p1):
+    """Whether segment (p0, p1) covers the sample (Xs, Ys), in 1/256 pixel (1/16 of a Q4 unit)."""
     (x0, y0, w0), (x1, y1, w1) = p0, p1
     ex, ey = x1 - x0, y1 - y0
     L = ex * ex + ey * ey
-    qx, qy = X - x0, Y - y0
+    qx, qy = Xs - 16 * x0, Ys - 16 * y0
     t = qx * ex + qy * ey
     if L == 0 or t <= 0:
         T = 0
-    elif t >= L:
+    elif t >= 16 * L:
         T = 1 << 24
     else:
-        T = (t << 24) // L
-    Ex = 256 * qx - (T * ex) // 65536
-    Ey = 256 * qy - (T * ey) // 65536
+        T = (t << 20) // L  # Python's integers are exact: t * 2^20 needs no long division
+    Ex = 16 * qx - (T * ex) // 65536
+    Ey = 16 * qy - (T * ey) // 65536
     hw = (w0 * (1 << 24) + T * (w1 - w0)) // (1 << 17)
     return Ex * Ex + Ey * Ey <= hw * hw
 
 
 def curve_coverage(header, s):
+    """The samples of 8.8 (the pixel centre alone for grid 0), each inside when a segment covers
+    it; a pixel's coverage counts its samples inside the union of the segments."""
     pts = s.points
     segments = [(pts[0], pts[0])] if len(pts) == 1 else list(zip(pts, pts[1:]))
-    covered = set()
+    offsets = sample_offsets(s.grid)  # side = len(offsets)
+    grow = 8 if s.grid >= 2 else 0    # a pixel's samples lie within 8 Q4 units of its centre
+    inside = {}  # (x, y) -> the samples (p, q) some segment covers
     for p0, p1 in segments:
-        m = -(-max(p0[2], p1[2]) // 2) + 1
+        m = -(-max(p0[2], p1[2]) // 2) + 1 + grow
         lo_x, hi_x = min(p0[0], p1[0]) - m, max(p0[0], p1[0]) + m
         lo_y, hi_y = min(p0[1], p1[1]) - m, max(p0[1], p1[1]) + m
         for y in range(max(-((8 - lo_y) // 16), 0), min((hi_y - 8) // 16, header.height - 1) + 1):
             for x in range(max(-((8 - lo_x) // 16), 0), min((hi_x - 8) // 16, header.width - 1) + 1):
-                if (x, y) not in covered and segment_covers(16 * x + 8, 16 * y + 8, p0, p1):
-                    covered.add((x, y))
-    for x, y in sorted(covered):
-        yield x, y, 255
+                covered = inside.setdefault((x, y), set())
+                for q, oq in enumerate(offsets):
+                    for p, op in enumerate(offsets):
+                        if (p, q) not in covered and segment_covers(256 * x + op, 256 * y + oq, p0, p1):
+                            covered.add((p, q))
+    for (x, y), covered in sorted(inside.items()):
+        if covered:
+            yield x, y, share(len(covered), len(offsets) ** 2)
 
 
 # ---- 8.8 polygons ----

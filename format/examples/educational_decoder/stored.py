@@ -9,7 +9,7 @@ def read_colour(r, linear):
     return rgba, tuple(r.take(3, "colour low bytes")) if linear else (0, 0, 0)
 
 
-def read_record(r, linear):
+def read_record(r, linear, curve_grid):
     kind = r.u8("stroke kind")
     if kind == STAMP:
         set_, template, orient = r.u8("set"), r.u8("template"), r.u8("orient")
@@ -23,10 +23,11 @@ def read_record(r, linear):
         return Affine(template, tx, ty, a, b, c, d, rgba, lo=lo)
     if kind == CURVE:
         rgba, lo = read_colour(r, linear)
+        grid = r.u8("grid") if curve_grid else 0  # format 1.4: only with the HEAD flag
         n = r.u32("point count")
         if n * 12 > r.left():
             fail("Truncated", f"{r.what}: curve of {n} points does not fit the body")
-        return Curve(rgba, [[r.i32("x"), r.i32("y"), r.u32("width")] for _ in range(n)], lo=lo)
+        return Curve(rgba, [[r.i32("x"), r.i32("y"), r.u32("width")] for _ in range(n)], lo=lo, grid=grid)
     if kind == POLYGON:  # kind 3 decodes in coding 0 whatever version_minor says (SPEC.md 6)
         rgba, lo = read_colour(r, linear)
         grid = r.u8("grid")
@@ -37,10 +38,10 @@ def read_record(r, linear):
     fail("Unsupported", f"{r.what}: stroke kind {kind} is reserved")
 
 
-def read_records(r, count, linear):
+def read_records(r, count, linear, curve_grid):
     if count * 16 > r.left():
         fail("Corrupt", f"{r.what}: {count} strokes cannot fit the body")
-    return [read_record(r, linear) for _ in range(count)]
+    return [read_record(r, linear, curve_grid) for _ in range(count)]
 
 
 def decode_stored(body, key, header, what):
@@ -66,6 +67,7 @@ def decode_stored(body, key, header, what):
             if cols * rows * 4 > r.left():
                 fail("Corrupt", f"{what}: motion field cannot fit the body")
             motion = Motion(bs, cols, rows, [(r.i16("dx"), r.i16("dy")) for _ in range(cols * rows)])
-    added = read_records(r, r.u32("stroke_count" if key else "added_count"), header.color_encoding == 1)
+    added = read_records(r, r.u32("stroke_count" if key else "added_count"), header.color_encoding == 1,
+                         header.curve_grid)
     r.end()
     return removed, motion, added

@@ -44,6 +44,7 @@ class Curve:
     points: list = field(default_factory=list)  # [x, y, width] lists
     kind: int = CURVE
     lo: tuple = (0, 0, 0)
+    grid: int = 0  # the supersampling grid N (format 1.4, curve_grid files): 0 or 2..16
 
 
 @dataclass
@@ -86,6 +87,8 @@ def check_stroke(s, header, template_count, what):
     elif s.kind == CURVE:
         if not s.points:
             fail("Corrupt", f"{what}: curve without points")
+        if s.grid == 1 or s.grid > 16:
+            fail("Unsupported", f"{what}: curve grid {s.grid} is reserved")
         for x, y, w in s.points:
             check_coord(x, what)
             check_coord(y, what)
@@ -101,16 +104,18 @@ def check_stroke(s, header, template_count, what):
             check_coord(y, what)
 
 
-def stored_record(s, linear=False):
+def stored_record(s, linear=False, curve_grid=False):
     """A stroke's coding-0 record (SPEC.md 6), its kind byte first. In colour encoding 1
-    (`linear`) the colour's r, g, b, a bytes are followed by r_lo, g_lo, b_lo."""
+    (`linear`) the colour's r, g, b, a bytes are followed by r_lo, g_lo, b_lo; in a file with
+    the curve_grid flag a curve's colour is followed by its grid, as a polygon's is."""
     colour = bytes(s.rgba) + (bytes(s.lo) if linear else b"")
     if s.kind == STAMP:
         return struct.pack("<BBBBii", STAMP, s.set, s.template, s.orient, s.x, s.y) + colour
     if s.kind == AFFINE:
         return struct.pack("<BBiiiiii", AFFINE, s.template, s.tx, s.ty, s.a, s.b, s.c, s.d) + colour
     if s.kind == CURVE:
-        out = bytes([CURVE]) + colour + struct.pack("<I", len(s.points))
+        grid = bytes([s.grid]) if curve_grid else b""
+        out = bytes([CURVE]) + colour + grid + struct.pack("<I", len(s.points))
         return out + b"".join(struct.pack("<iiI", x, y, w) for x, y, w in s.points)
     out = bytes([POLYGON]) + colour + struct.pack("<BI", s.grid, len(s.vertices))
     return out + b"".join(struct.pack("<ii", x, y) for x, y in s.vertices)
@@ -123,9 +128,10 @@ def fnv1a64(data):
     return h
 
 
-def live_hash(live, linear=False):
-    """The manifest's live_fnv1a64: FNV-1a 64 of the live list as a coding-0 key frame body."""
-    return fnv1a64(struct.pack("<I", len(live)) + b"".join(stored_record(s, linear) for s in live))
+def live_hash(live, linear=False, curve_grid=False):
+    """The manifest's live_fnv1a64: FNV-1a 64 of the live list as a coding-0 key frame body of
+    the file (its records as that file stores them: low bytes, curve grids)."""
+    return fnv1a64(struct.pack("<I", len(live)) + b"".join(stored_record(s, linear, curve_grid) for s in live))
 
 
 # ---- SPEC.md 5: applying a frame ----
@@ -172,7 +178,7 @@ def move(s, motion, what):
 
 def copy_stroke(s):
     if s.kind == CURVE:
-        return Curve(s.rgba, [list(p) for p in s.points], lo=s.lo)
+        return Curve(s.rgba, [list(p) for p in s.points], lo=s.lo, grid=s.grid)
     if s.kind == POLYGON:
         return Polygon(s.rgba, s.grid, [list(v) for v in s.vertices], lo=s.lo)
     return type(s)(**{k: getattr(s, k) for k in s.__dataclass_fields__})
