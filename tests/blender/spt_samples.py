@@ -14,7 +14,7 @@ except ImportError:
     sys.path.insert(0, ADDON)
 
 from spt_grease_pencil.io import model, writer  # noqa: E402
-from spt_grease_pencil.io.model import (AFFINE, CURVE, INTER, KEY, POLYGON, STAMP, Frame, Header,  # noqa: E402
+from spt_grease_pencil.io.model import (AFFINE, INTER, KEY, POLYGON, STAMP, Frame, Header,  # noqa: E402
                                         Motion, StreamInfo, Template)
 
 
@@ -57,10 +57,14 @@ def random_affine(rng, inf):
 
 
 def random_curve(rng, inf):
+    """A curve of 1..5 points; in a file with the curve_grid flag (format 1.4) with a grid N of
+    0, 2, 4 or 16 (model.py: the tuple holds N only when it is not 0)."""
     h = inf.header
     n = rng.randrange(1, 6)
     pts = tuple((rng.randrange(16 * h.width), rng.randrange(16 * h.height), rng.randrange(8, 80)) for _ in range(n))
-    return (CURVE, rng.randrange(256), rng.randrange(256), rng.randrange(256), 255, pts)
+    rgb = (rng.randrange(256), rng.randrange(256), rng.randrange(256))
+    grid = rng.choice((0, 2, 4, 16)) if h.curve_grid else 0
+    return model.curve_tuple(*rgb, 255, pts, grid)
 
 
 def random_polygon(rng, inf):
@@ -83,13 +87,16 @@ def random_polygon(rng, inf):
             rng.choice((0, 2, 4, 16)), tuple(pts))
 
 
-def animation(frames=4, per_set=(6, 10, 14), seed=7, affines=3, curves=2, motion=True, inf=None, polygons=0):
+def animation(frames=4, per_set=(6, 10, 14), seed=7, affines=3, curves=2, motion=True, inf=None, polygons=0,
+              curve_grids=False):
     """A key frame (stamps coarse to fine, affine strokes, polygons, curves), then inter frames
     that remove some strokes, move the rest (motion field) and add strokes of every kind,
-    interleaved. polygons > 0 makes a format 1.2 file (one more polygon added per inter frame)."""
+    interleaved. polygons > 0 makes a format 1.2 file (one more polygon added per inter frame);
+    curve_grids a format 1.4 file whose curves carry grids (HEAD flag curve_grid)."""
     rng = random.Random(seed)
     inf = inf or info()
     h = inf.header
+    h.curve_grid = h.curve_grid or curve_grids
     out = []
     key = []
     for si, n in enumerate(per_set):

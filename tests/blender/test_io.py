@@ -255,7 +255,8 @@ class Columnar(Tmp):
 
     def test_live_lists_agree(self):
         for kw in ({"frames": 6}, {"frames": 5, "motion": False}, {"frames": 3, "curves": 0, "affines": 0},
-                   {"frames": 6, "polygons": 4}, {"frames": 4, "polygons": 2, "motion": False}):
+                   {"frames": 6, "polygons": 4}, {"frames": 4, "polygons": 2, "motion": False},
+                   {"frames": 5, "polygons": 2, "curves": 5, "curve_grids": True}):
             p = self.sample(**kw)
             ref = list(ref_reader.read_file(p).live_lists())
             f = read_file(p, columnar=True)
@@ -387,10 +388,11 @@ class Columnar(Tmp):
         self.assertEqual(list(read_file(p).live_lists()), lists)
 
     def test_corruption_gives_the_same_verdict(self):
-        data = read_all(self.sample(frames=3, polygons=3))
         rng = random.Random(11)
-        for _ in range(200):
-            d = damaged(data, rng)
+        samples = [read_all(self.sample(frames=3, polygons=3)),
+                   read_all(self.sample(frames=3, polygons=3, curve_grids=True))]  # format 1.4
+        for k in range(400):
+            d = damaged(samples[k % 2], rng)
             outcome = []
             for read in (ref_reader.read_bytes, lambda b, n: read_bytes(b, n, columnar=True)):
                 try:
@@ -403,10 +405,12 @@ class Columnar(Tmp):
 
 class RecordBytes(unittest.TestCase):
     def test_packing_agrees_with_the_oracle(self):
-        for kw in ({"frames": 3}, {"frames": 3, "polygons": 4}):
+        for kw in ({"frames": 3}, {"frames": 3, "polygons": 4}, {"frames": 3, "curves": 6, "curve_grids": True}):
             inf, frames = spt_samples.animation(**kw)
+            g = inf.header.curve_grid
             for ls in apply_frames(inf.header, frames, Limits()):
-                self.assertEqual(strokes_np.StrokeTable.from_tuples(ls).record_bytes(), ref_writer.strokes_bytes(ls))
+                self.assertEqual(strokes_np.StrokeTable.from_tuples(ls).record_bytes(False, g),
+                                 ref_writer.strokes_bytes(ls, False, g))
 
     def test_add_on_frame_coder_agrees_with_the_oracle(self):
         from spt_grease_pencil.io.writer import frames_from_lists as coder

@@ -15,7 +15,7 @@ against."""
 
 import numpy as np
 
-from .model import AFFINE, MAX_MATRIX, MAX_POS, STAMP
+from .model import AFFINE, MAX_MATRIX, MAX_POS, STAMP, curve_tuple
 from .strokes_np import A, KIND, MA, MB, MC, MD, NCOL, ORIENT, R, SET, TMPL, X, Y, StrokeTable
 
 CORNERS_UV = ((-1, -1), (1, -1), (1, 1), (-1, 1))
@@ -147,9 +147,12 @@ def quads_to_strokes(corners, templates, rgba, sets, orients, set_hint=None):
     return [t if v else None for t, v in zip(tup, valid.tolist())]
 
 
-def points_to_curve(points, rgba):
-    """A curve stroke (tuple) from (x px, y px, width px) points; None when empty or out of range.
-    One curve at a time: curves drawn by hand are few."""
+def points_to_curve(points, rgba, grid: int = 0):
+    """A curve stroke (tuple) from (x px, y px, width px) points and its supersampling grid N
+    (format 1.4; 0: pixel centres); None when empty, out of range or of a reserved grid (1,
+    17..). One curve at a time: curves drawn by hand are few."""
+    if grid == 1 or not 0 <= grid <= 16:
+        return None
     pts = []
     for (x, y, w) in points:
         qx, qy, qw = (int(np.floor(v * 16.0 + 0.5)) for v in (x, y, w))
@@ -159,4 +162,4 @@ def points_to_curve(points, rgba):
         pts.append((qx, qy, qw))
     if not pts:
         return None
-    return (2,) + tuple(rgba) + (tuple(pts),)
+    return curve_tuple(*rgba, tuple(pts), grid)

@@ -6,7 +6,12 @@ by equality):
     stamp:  (STAMP, set, template, orient, x, y, r, g, b, a)
     affine: (AFFINE, template, tx, ty, a, b, c, d, r, g, b, a)
     curve:  (CURVE, r, g, b, a, ((x, y, width), ...))
+            (CURVE, r, g, b, a, ((x, y, width), ...), n_grid)  format 1.4, n_grid 2..16
     polygon: (POLYGON, r, g, b, a, n_grid, ((x, y), ...))   format 1.2, SPEC.md 4 and 8.8
+
+A curve's supersampling grid N (format 1.4, files with the HEAD flag curve_grid; SPEC.md 8.5)
+trails its points and is left out when it is 0, so that the curves of every older file keep
+their tuples (and compare equal to them); curve_tuple() and curve_grid_of() make and read it.
 
 All positions and lengths are Q4 integers (1/16 pixel), as in the file. r, g, b are the colour
 values: 8-bit sRGB in colour encoding 0, and in colour encoding 1 (format 1.3, scene-linear) the
@@ -87,6 +92,10 @@ class Header:
     alpha: bool = False
     color_encoding: int = SRGB8
     background_lo: Tuple[int, int, int] = (0, 0, 0)
+    # Format 1.4: HEAD flags bit 1. Every curve record carries a supersampling grid N (0 or
+    # 2..16, anti-aliased edges for N >= 2); without it curves have none and are sampled at
+    # pixel centres.
+    curve_grid: bool = False
 
     @property
     def linear(self) -> bool:
@@ -153,6 +162,16 @@ def default_orientations(n: int = 8) -> List[Tuple[int, int]]:
             for k in range(n)]
 
 
+def curve_tuple(r, g, b, a, points, grid: int = 0):
+    """A curve tuple in its one form: the grid N is appended only when it is not 0."""
+    return (CURVE, r, g, b, a, points) + ((grid,) if grid else ())
+
+
+def curve_grid_of(s) -> int:
+    """The supersampling grid N of a curve tuple (0 when it has none)."""
+    return s[6] if len(s) > 6 else 0
+
+
 def stroke_color(s) -> Tuple[int, int, int, int]:
     if s[0] == STAMP:
         return s[6], s[7], s[8], s[9]
@@ -169,4 +188,4 @@ def with_color(s, rgba):
         return s[:8] + (r, g, b, a)
     if s[0] == POLYGON:
         return (POLYGON, r, g, b, a, s[5], s[6])
-    return (CURVE, r, g, b, a, s[5])
+    return (CURVE, r, g, b, a) + s[5:]

@@ -38,7 +38,7 @@ class ColumnarDecoding:
         return strokes_np.parse_records(body, pos, count, path, base, len(info.templates),
                                         len(info.header.sets), len(info.header.orientations),
                                         limits.max_curve_points, self.curves, limits.max_polygon_vertices,
-                                        info.header.linear)
+                                        info.header.linear, info.header.curve_grid)
 
     def live_lists(self, header: Header, frames: List[Frame], limits: Limits, path: str):
         return state_np.apply_frames(header, frames, limits, path, self.curves)
@@ -75,9 +75,10 @@ def _parse_head(p, path, off, limits) -> Header:
     (vmaj, vmin, flags, w, h, fnum, fden, fcount, cenc, br, bg, bb, nsets, norients, res) = _HEAD.unpack_from(p, 0)
     if vmaj != 1:
         raise _err(path, off, f"format version {vmaj}.{vmin} is not supported (this reader knows 1.x)")
-    if flags & ~1 or res != 0:
+    if flags & ~3 or res != 0:
         raise _err(path, off, "reserved HEAD fields are not 0 (unsupported file)")
     alpha = bool(flags & 1)
+    curve_grid = bool(flags & 2)   # format 1.4: every curve record carries a grid byte
     if not (1 <= w <= limits.max_width and 1 <= h <= limits.max_height and w * h <= limits.max_pixels):
         raise _err(path, off, f"canvas {w}x{h} is outside the limits")
     if fnum == 0 or fden == 0:
@@ -87,6 +88,8 @@ def _parse_head(p, path, off, limits) -> Header:
                               "and 1, scene-linear half floats)")
     if (alpha or cenc == LINEAR_HALF) and vmin < 3:
         raise _err(path, off, f"an alpha canvas or colour encoding 1 needs format 1.3, the file says 1.{vmin}")
+    if curve_grid and vmin < 4:
+        raise _err(path, off, f"anti-aliased curves (HEAD flag curve_grid) need format 1.4, the file says 1.{vmin}")
     if not (1 <= nsets <= 16) or not (1 <= norients <= 64):
         raise _err(path, off, f"{nsets} stroke sets / {norients} orientations (allowed 1..16 / 1..64)")
     need = _HEAD.size + 4 * nsets + 4 * norients
@@ -110,7 +113,7 @@ def _parse_head(p, path, off, limits) -> Header:
             raise _err(path, off, f"orientation {i} ({c}, {s}) is longer than unit length")
     return Header(width=w, height=h, fps_num=fnum, fps_den=fden, frame_count=fcount, version_major=vmaj,
                   version_minor=vmin, background=(br, bg, bb), sets=sets, orientations=orients,
-                  alpha=alpha, color_encoding=cenc, background_lo=background_lo)
+                  alpha=alpha, color_encoding=cenc, background_lo=background_lo, curve_grid=curve_grid)
 
 
 def _parse_tmpl(p, path, off, limits) -> Template:

@@ -14,7 +14,7 @@ def to_json(info: StreamInfo) -> str:
                    "background": list(h.background), "sets": [list(s) for s in h.sets],
                    "orientations": [list(o) for o in h.orientations],
                    "alpha": bool(h.alpha), "color_encoding": int(h.color_encoding),
-                   "background_lo": list(h.background_lo)},
+                   "background_lo": list(h.background_lo), "curve_grid": bool(h.curve_grid)},
         "templates": [{"kind": t.kind, "width": t.width, "height": t.height, "name": t.name,
                        "pixels": base64.b64encode(t.pixels).decode("ascii"), "supersample": t.supersample} for t in info.templates],
         "metadata": [list(kv) for kv in info.metadata],
@@ -31,7 +31,8 @@ def from_json(text: str) -> StreamInfo:
                sets=[tuple(int(v) for v in s) for s in hd["sets"]],
                orientations=[tuple(int(v) for v in o) for o in hd["orientations"]],
                alpha=bool(hd.get("alpha", False)), color_encoding=int(hd.get("color_encoding", 0)),
-               background_lo=tuple(int(v) for v in hd.get("background_lo", (0, 0, 0))))
+               background_lo=tuple(int(v) for v in hd.get("background_lo", (0, 0, 0))),
+               curve_grid=bool(hd.get("curve_grid", False)))
     info = StreamInfo(header=h)
     info.templates = [Template(int(t["kind"]), int(t["width"]), int(t["height"]),
                                base64.b64decode(t["pixels"]), t.get("name", ""), int(t.get("supersample", 0))) for t in d.get("templates", [])]

@@ -9,7 +9,8 @@ stroke animation needs the vectorised form. A StrokeTable holds one int32 row pe
 stamp:   SET TMPL ORIENT, X Y = position (Q4); MA..MD = 0
 affine:  TMPL, X Y = translation (Q4), MA MB MC MD = matrix (a b c d, Q4); SET = ORIENT = 0
 curve:   CURVE = index into a pool (a list of int32 arrays) shared by the tables of one file:
-         (n, 3) x, y, width in Q4; every other geometry column 0.
+         (n, 3) x, y, width in Q4; GRID = supersampling N (format 1.4: a file with the HEAD flag
+         curve_grid stores it in every curve record; 0 otherwise); every other geometry column 0.
 polygon: X Y = the first vertex P0 (Q4), GRID = supersampling N, CURVE = pool entry (n, 2) of
          every vertex RELATIVE to P0 (so its first row is 0, 0).
 
@@ -32,7 +33,8 @@ import struct
 
 import numpy as np
 
-from .model import AFFINE, CURVE, MAX_CURVE_WIDTH, MAX_HALF_CODE, MAX_MATRIX, MAX_POS, POLYGON, STAMP, SptError
+from .model import (AFFINE, CURVE, MAX_CURVE_WIDTH, MAX_HALF_CODE, MAX_MATRIX, MAX_POS, POLYGON, STAMP, SptError,
+                    curve_grid_of, curve_tuple)
 
 KIND, SET, TMPL, ORIENT, X, Y, MA, MB, MC, MD, R, G, B, A, CURVE_ID, GRID = range(16)
 NCOL = 16
@@ -51,6 +53,14 @@ _CURVE_LIN_HEAD = struct.Struct("<BBBBBBBBI")      # kind, r, g, b, a, r_lo, g_l
 _POINT_DT = np.dtype([("x", "<i4"), ("y", "<i4"), ("w", "<u4")])
 _POLYGON_HEAD = struct.Struct("<BBBBBBI")  # kind, r, g, b, a, grid N, n
 _POLYGON_LIN_HEAD = struct.Struct("<BBBBBBBBBI")   # kind, r, g, b, a, r_lo, g_lo, b_lo, grid N, n
+# Format 1.4, files with the curve_grid flag: a curve's head holds its grid N where a polygon's does.
+_CURVE_GRID_HEAD, _CURVE_GRID_LIN_HEAD = _POLYGON_HEAD, _POLYGON_LIN_HEAD
+
+
+def _curve_head(linear: bool, curve_grid: bool):
+    if curve_grid:
+        return _CURVE_GRID_LIN_HEAD if linear else _CURVE_GRID_HEAD
+    return _CURVE_LIN_HEAD if linear else _CURVE_HEAD
 
 
 def _split_codes(rgb):
@@ -121,7 +131,7 @@ class StrokeTable:
                 out.append((POLYGON, r[R], r[G], r[B], r[A], r[GRID], tuple(tuple(p) for p in v.tolist())))
             else:
                 pts = tuple(tuple(p) for p in self.curves[r[CURVE_ID]].tolist())
-                out.append((CURVE, r[R], r[G], r[B], r[A], pts))
+                out.append(curve_tuple(r[R], r[G], r[B], r[A], pts, r[GRID]))
         return out
 
     @classmethod
@@ -137,14 +147,14 @@ class StrokeTable:
             elif k == POLYGON:
                 rows[i] = polygon_row(s[1], s[2], s[3], s[4], s[5], s[6], curves)
             else:
-                rows[i, [KIND, R, G, B, A]] = s[:5]
+                rows[i, [KIND, R, G, B, A, GRID]] = s[:5] + (curve_grid_of(s),)
                 rows[i, CURVE_ID] = len(curves)
                 curves.append(np.asarray(s[5], dtype=np.int32).reshape(-1, 3))
         return cls(rows, curves)
 
-    def record_bytes(self, linear: bool = False) -> bytes:
+    def record_bytes(self, linear: bool = False, curve_grid: bool = False) -> bytes:
         """The stroke records of a stored frame body (section 4), in order."""
-        return records_bytes(self.rows, self.curves, linear)
+        return records_bytes(self.rows, self.curves, linear, curve_grid)
 
 
 def tables_from_lists(live_lists):
@@ -225,13 +235,14 @@ def _run_rows(rec, columns, linear, path, at, size, code_error):
 
 def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: int, nsets: int,
                   norients: int, max_curve_points: int, curves: list, max_polygon_vertices: int = 1 << 16,
-                  linear: bool = False):
+                  linear: bool = False, curve_grid: bool = False):
     """Parses `count` stroke records of a stored frame body from `pos`; returns (table, pos).
     `linear`: colour encoding 1, whose records carry three low bytes after r, g, b, a.
+    `curve_grid`: the HEAD flag of format 1.4, whose curve records carry a grid N after those.
     Errors name the byte offset (base + position in the body) of the offending record."""
     stamp_dt, affine_dt = (STAMP_LIN_DT, AFFINE_LIN_DT) if linear else (STAMP_DT, AFFINE_DT)
     ssz, asz = stamp_dt.itemsize, affine_dt.itemsize
-    curve_head = _CURVE_LIN_HEAD if linear else _CURVE_HEAD
+    curve_head = _curve_head(linear, curve_grid)
     polygon_head = _POLYGON_LIN_HEAD if linear else _POLYGON_HEAD
     code_error = "colour code is not a finite half float >= 0 (above 0x7BFF)"
     buf = np.frombuffer(body, dtype=np.uint8)
@@ -282,9 +293,12 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
             hs = curve_head.size
             if pos + hs > n:
                 raise _err(path, base + pos, "truncated curve stroke")
-            r, g, b, a, npts = _head_colour(curve_head.unpack_from(body, pos), linear)
+            r, g, b, a, *grid, npts = _head_colour(curve_head.unpack_from(body, pos), linear)
+            grid = grid[0] if grid else 0
             if max(r, g, b) > (MAX_HALF_CODE if linear else 255):
                 raise _err(path, base + pos, code_error)
+            if grid == 1 or grid > 16:
+                raise _err(path, base + pos, f"curve supersampling {grid} is reserved")
             if npts < 1 or npts > max_curve_points:
                 raise _err(path, base + pos, f"curve stroke has {npts} points (allowed 1..{max_curve_points})")
             if pos + hs + 12 * npts > n:
@@ -293,7 +307,7 @@ def parse_records(body, pos: int, count: int, path: str, base: int, ntemplates: 
             if (np.abs(p["x"]) > MAX_POS).any() or (np.abs(p["y"]) > MAX_POS).any() or (p["w"] > MAX_CURVE_WIDTH).any():
                 raise _err(path, base + pos, "curve point out of range")
             row = np.zeros((1, NCOL), dtype=np.int32)
-            row[0, [KIND, R, G, B, A, CURVE_ID]] = (CURVE, r, g, b, a, len(curves))
+            row[0, [KIND, R, G, B, A, GRID, CURVE_ID]] = (CURVE, r, g, b, a, grid, len(curves))
             curves.append(np.stack([p["x"], p["y"], p["w"].astype(np.int32)], axis=1))
             pieces.append(row)
             pos += hs + 12 * npts
@@ -351,13 +365,29 @@ def _head_bytes(head, kind, row, linear, *rest):
     return head.pack(kind, row[R], row[G], row[B], row[A], *rest)
 
 
-def records_bytes(rows, curves, linear: bool = False) -> bytes:
+def check_curve_grids(rows, curve_grid: bool) -> None:
+    """Curve grids a record can hold: 0 or 2..16 with the HEAD flag curve_grid, 0 without it
+    (a file without the flag has no byte for one)."""
+    g = rows[(rows[:, KIND] == CURVE), GRID]
+    bad = (g != 0) if not curve_grid else ((g == 1) | (g < 0) | (g > 16))
+    if bad.any():
+        i = int(np.flatnonzero(rows[:, KIND] == CURVE)[np.argmax(bad)])
+        if curve_grid:
+            raise SptError(f"curve {i}: supersampling grid {int(rows[i, GRID])} is not 0 or 2..16")
+        raise SptError(f"curve {i}: supersampling grid {int(rows[i, GRID])} needs the HEAD flag curve_grid "
+                       "(format 1.4)")
+
+
+def records_bytes(rows, curves, linear: bool = False, curve_grid: bool = False) -> bytes:
     """Stroke records in order; runs of one kind are packed with one structured array each.
-    `linear`: colour encoding 1 (R G B hold 16-bit codes; records carry their low bytes)."""
+    `linear`: colour encoding 1 (R G B hold 16-bit codes; records carry their low bytes).
+    `curve_grid`: the HEAD flag of format 1.4 (curve records carry their grid N)."""
     n = rows.shape[0]
     if n == 0:
         return b""
     check_colours(rows, linear)
+    check_curve_grids(rows, curve_grid)
+    curve_head = _curve_head(linear, curve_grid)
     stamp_dt, affine_dt = (STAMP_LIN_DT, AFFINE_LIN_DT) if linear else (STAMP_DT, AFFINE_DT)
     kinds = rows[:, KIND]
     cuts = np.flatnonzero(kinds[1:] != kinds[:-1]) + 1
@@ -384,7 +414,8 @@ def records_bytes(rows, curves, linear: bool = False) -> bytes:
         elif k == CURVE:
             for row in r.tolist():
                 pts = curves[row[CURVE_ID]]
-                out.append(_head_bytes(_CURVE_LIN_HEAD if linear else _CURVE_HEAD, CURVE, row, linear, pts.shape[0]))
+                grid = (row[GRID],) if curve_grid else ()
+                out.append(_head_bytes(curve_head, CURVE, row, linear, *grid, pts.shape[0]))
                 out.append(np.ascontiguousarray(pts, dtype="<i4").tobytes())
         elif k == POLYGON:
             for i in range(r.shape[0]):

@@ -14,7 +14,7 @@ from .strokes_np import StrokeTable
 
 def head_payload(info: StreamInfo, frame_count: int, minor: int = 0) -> bytes:
     """HEAD; `minor` is the format's minor version: 2 when a frame holds a polygon, 3 for an
-    alpha canvas or colour encoding 1 (SPEC.md 11)."""
+    alpha canvas or colour encoding 1, 4 for the curve_grid flag (SPEC.md 11)."""
     h = info.header
     if h.color_encoding not in (SRGB8, LINEAR_HALF):
         raise SptError(f"colour encoding {h.color_encoding} cannot be written (0 sRGB or 1 linear half)")
@@ -23,7 +23,8 @@ def head_payload(info: StreamInfo, frame_count: int, minor: int = 0) -> bytes:
         raise SptError(f"background {h.background_values()} is not a colour of encoding {h.color_encoding}")
     if not h.linear and any(h.background_lo):
         raise SptError("background low bytes are set in colour encoding 0")
-    p = struct.pack("<HHIIIIIIB3BBBH", 1, minor, 1 if h.alpha else 0, h.width, h.height, h.fps_num, h.fps_den,
+    flags = (1 if h.alpha else 0) | (2 if h.curve_grid else 0)
+    p = struct.pack("<HHIIIIIIB3BBBH", 1, minor, flags, h.width, h.height, h.fps_num, h.fps_den,
                     frame_count, h.color_encoding, *h.background, len(h.sets), len(h.orientations), 0)
     p += b"".join(struct.pack("<HH", w, hh) for (w, hh) in h.sets)
     p += b"".join(struct.pack("<hh", c, s) for (c, s) in h.orientations)
@@ -52,18 +53,19 @@ def meta_payload(items) -> bytes:
     return b"".join(out)
 
 
-def _added_bytes(added, linear: bool) -> bytes:
+def _added_bytes(added, linear: bool, curve_grid: bool) -> bytes:
     # A StrokeTable (strokes_np.py) packs itself; a list of model.py tuples becomes one first.
     if not hasattr(added, "record_bytes"):
         added = StrokeTable.from_tuples(list(added))
-    return added.record_bytes(linear)
+    return added.record_bytes(linear, curve_grid)
 
 
-def frame_payload(fr: Frame, linear: bool = False) -> bytes:
-    """A stored FRAM payload; `linear`: colour encoding 1 (colours are 16-bit codes)."""
+def frame_payload(fr: Frame, linear: bool = False, curve_grid: bool = False) -> bytes:
+    """A stored FRAM payload; `linear`: colour encoding 1 (colours are 16-bit codes);
+    `curve_grid`: the format 1.4 HEAD flag (curve records carry their grid N)."""
     head = struct.pack("<IBBH", fr.index, fr.type, 0, 0)
     if fr.type == KEY:
-        return head + struct.pack("<I", len(fr.added)) + _added_bytes(fr.added, linear)
+        return head + struct.pack("<I", len(fr.added)) + _added_bytes(fr.added, linear, curve_grid)
     nrem = len(fr.removed)
     if hasattr(fr.removed, "astype"):  # numpy array
         rem = fr.removed.astype("<u4").tobytes()
@@ -80,7 +82,7 @@ def frame_payload(fr: Frame, linear: bool = False) -> bytes:
         else:
             body.append(struct.pack(f"<{2 * len(m.vectors)}h", *[c for v in m.vectors for c in v]))
     body.append(struct.pack("<I", len(fr.added)))
-    body.append(_added_bytes(fr.added, linear))
+    body.append(_added_bytes(fr.added, linear, curve_grid))
     return b"".join(body)
 
 
@@ -92,9 +94,11 @@ def _has_polygon(added) -> bool:
 
 def write_stored(path: str, info: StreamInfo, frames: List[Frame]) -> int:
     """Writes a complete stored-mode file (HEAD, TMPL*, meta, rois, FRAM*, indx, IEND).
-    Returns the number of bytes written."""
+    Returns the number of bytes written. A curve with a grid N other than 0 needs the header's
+    curve_grid (the exporter sets it); the file is then format 1.4."""
     h = info.header
-    minor = 3 if (h.alpha or h.linear) else 2 if any(_has_polygon(f.added) for f in frames) else 0
+    minor = 4 if h.curve_grid else 3 if (h.alpha or h.linear) else \
+        2 if any(_has_polygon(f.added) for f in frames) else 0
     try:
         head = head_payload(info, len(frames), minor)
     except SptError as e:
@@ -113,7 +117,7 @@ def write_stored(path: str, info: StreamInfo, frames: List[Frame]) -> int:
     index = []
     for fr in frames:
         try:
-            payload = frame_payload(fr, h.linear)
+            payload = frame_payload(fr, h.linear, h.curve_grid)
         except SptError as e:
             raise SptError(f"{path}: frame {fr.index}: {e}") from None
         c = chunks.chunk_bytes(b"FRAM", payload)

@@ -8,8 +8,8 @@ The conventions (corners, Q4 centres, stamp axes) are those io/geometry.py state
 import math
 from typing import List, Optional, Sequence, Tuple
 
-from spt_grease_pencil.io.geometry import CORNERS_UV, STAMP_TOLERANCE_PX, points_to_curve  # noqa: F401
-from spt_grease_pencil.io.model import AFFINE, MAX_MATRIX, MAX_POS, STAMP
+from spt_grease_pencil.io.geometry import CORNERS_UV, STAMP_TOLERANCE_PX  # noqa: F401
+from spt_grease_pencil.io.model import AFFINE, CURVE, MAX_CURVE_WIDTH, MAX_MATRIX, MAX_POS, STAMP
 
 # uv_fill of the corners: template row 0 (v = -1) is the image's top row (Blender v = 1).
 UV_FILL = (0.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0)
@@ -87,6 +87,21 @@ def quad_to_stroke(corners, template: int, rgba, sets, orients, set_hint=None):
 def curve_points(stroke) -> List[Tuple[float, float, float]]:
     """(x px, y px, width px) per point of a curve stroke."""
     return [(x / 16.0, y / 16.0, w / 16.0) for (x, y, w) in stroke[5]]
+
+
+def points_to_curve(points, rgba, grid: int = 0):
+    """A curve stroke from (x px, y px, width px) points rounded to Q4 (a negative width to 0)
+    and its grid N (format 1.4), which model.py appends only when it is not 0; None when it has
+    no point, one out of range, or a reserved grid N."""
+    pts = []
+    for (x, y, w) in points:
+        qx, qy, qw = _q4(x), _q4(y), max(0, _q4(w))
+        if abs(qx) > MAX_POS or abs(qy) > MAX_POS or qw > MAX_CURVE_WIDTH:
+            return None
+        pts.append((qx, qy, qw))
+    if not pts or grid == 1 or not 0 <= grid <= 16:
+        return None
+    return (CURVE,) + tuple(rgba) + (tuple(pts),) + ((grid,) if grid else ())
 
 
 def polygon_points(stroke) -> List[Tuple[float, float]]:

@@ -21,6 +21,9 @@ _STAMP_LIN = struct.Struct("<BBBBiiBBBBBBB")
 _AFFINE_LIN = struct.Struct("<BBiiiiiiBBBBBBB")
 _CURVE_LIN_HEAD = struct.Struct("<BBBBBBBBI")
 _POLYGON_LIN_HEAD = struct.Struct("<BBBBBBBBBI")
+# Format 1.4, a file with the HEAD flag curve_grid: a curve's grid N follows its colour.
+_CURVE_GRID_HEAD = struct.Struct("<BBBBBBI")        # kind, r, g, b, a, grid N, n
+_CURVE_GRID_LIN_HEAD = struct.Struct("<BBBBBBBBBI")  # kind, r, g, b, a, r_lo, g_lo, b_lo, grid N, n
 MAX_HALF_CODE = 0x7BFF
 
 
@@ -89,6 +92,7 @@ def parse_strokes(body, pos: int, count: int, path: str, base: int, info: Stream
     linear = info.header.color_encoding == 1
     if linear:
         return _parse_linear(body, pos, count, path, base, info, limits)
+    grid_byte = 1 if info.header.curve_grid else 0
     stamp_unpack = _STAMP.unpack_from
     for _ in range(count):
         if pos >= n:
@@ -110,19 +114,26 @@ def parse_strokes(body, pos: int, count: int, path: str, base: int, info: Stream
             _check_stroke(s, path, base + pos, ntemplates, nsets, norients, limits)
             pos += 30
         elif kind == CURVE:
-            if pos + 9 > n:
+            hs = 9 + grid_byte
+            if pos + hs > n:
                 raise _err(path, base + pos, "truncated curve stroke")
-            _, r, g, b, a, npts = _CURVE_HEAD.unpack_from(body, pos)
+            if grid_byte:
+                _, r, g, b, a, grid, npts = _CURVE_GRID_HEAD.unpack_from(body, pos)
+            else:
+                (_, r, g, b, a, npts), grid = _CURVE_HEAD.unpack_from(body, pos), 0
+            if grid == 1 or grid > 16:
+                raise _err(path, base + pos, f"curve supersampling {grid} is reserved")
             if npts < 1 or npts > limits.max_curve_points:
                 raise _err(path, base + pos, f"curve stroke has {npts} points (allowed 1..{limits.max_curve_points})")
-            if pos + 9 + 12 * npts > n:
+            if pos + hs + 12 * npts > n:
                 raise _err(path, base + pos, f"curve stroke of {npts} points runs past the frame body")
-            pts = tuple(struct.iter_unpack("<iiI", body[pos + 9:pos + 9 + 12 * npts]))
+            pts = tuple(struct.iter_unpack("<iiI", body[pos + hs:pos + hs + 12 * npts]))
             for (x, y, w) in pts:
                 if abs(x) > MAX_POS or abs(y) > MAX_POS or w > MAX_CURVE_WIDTH:
                     raise _err(path, base + pos, "curve point out of range")
-            s = (CURVE, r, g, b, a, pts)
-            pos += 9 + 12 * npts
+            # model.py: the grid trails the points, and only when it is not 0
+            s = (CURVE, r, g, b, a, pts) + ((grid,) if grid else ())
+            pos += hs + 12 * npts
         elif kind == POLYGON:
             if pos + 10 > n:
                 raise _err(path, base + pos, "truncated polygon stroke")
@@ -150,7 +161,8 @@ def _parse_linear(body, pos, count, path, base, info, limits):
     the three low bytes taken out after the opacity, then combine them into codes."""
     n = len(body)
     out = []
-    heads = {STAMP: (_STAMP_LIN, 6), AFFINE: (_AFFINE_LIN, 8), CURVE: (_CURVE_LIN_HEAD, 1), POLYGON: (_POLYGON_LIN_HEAD, 1)}
+    curve_head = _CURVE_GRID_LIN_HEAD if info.header.curve_grid else _CURVE_LIN_HEAD
+    heads = {STAMP: (_STAMP_LIN, 6), AFFINE: (_AFFINE_LIN, 8), CURVE: (curve_head, 1), POLYGON: (_POLYGON_LIN_HEAD, 1)}
     for _ in range(count):
         if pos >= n:
             raise _err(path, base + pos, f"frame body ends inside its stroke list ({len(out)} of {count} strokes)")
@@ -168,12 +180,14 @@ def _parse_linear(body, pos, count, path, base, info, limits):
             _check_stroke(s, path, base + start, len(info.templates), len(info.header.sets),
                           len(info.header.orientations), limits)
         elif kind == CURVE:
-            npts = s[5]
+            grid, npts = (s[5], s[6]) if info.header.curve_grid else (0, s[5])
+            if grid == 1 or grid > 16:
+                raise _err(path, base + start, f"curve supersampling {grid} is reserved")
             if npts < 1 or npts > limits.max_curve_points or pos + 12 * npts > n:
                 raise _err(path, base + start, f"curve stroke of {npts} points is out of range or runs past the body")
             pts = tuple(struct.iter_unpack("<iiI", body[pos:pos + 12 * npts]))
             pos += 12 * npts
-            s = s[:5] + (pts,)
+            s = s[:5] + (pts,) + ((grid,) if grid else ())
         else:
             grid, npts = s[5], s[6]
             if grid == 1 or grid > 16 or npts < 3 or npts > limits.max_polygon_vertices or pos + 8 * npts > n:
@@ -279,4 +293,4 @@ def move_stroke(s, m: Motion, path="<memory>", index=0):
     for (x, y, w) in s[5]:
         dx, dy = _block_vector(m, x, y)
         pts.append((chk(x + dx), chk(y + dy), w))
-    return s[:5] + (tuple(pts),)
+    return s[:5] + (tuple(pts),) + s[6:]  # a curve's grid N (format 1.4) stays

@@ -9,7 +9,6 @@ from spt_grease_pencil.io.model import AFFINE, CURVE, INTER, KEY, POLYGON, STAMP
 
 _STAMP = struct.Struct("<BBBBiiBBBB")
 _AFFINE = struct.Struct("<BBiiiiiiBBBB")
-_CURVE_HEAD = struct.Struct("<BBBBBI")
 
 
 def _split(s, at):
@@ -19,9 +18,19 @@ def _split(s, at):
     return s[:at] + (r >> 8, g >> 8, b >> 8, a, r & 255, g & 255, b & 255) + s[at + 4:]
 
 
-def strokes_bytes(strokes: Iterable, linear: bool = False) -> bytes:
+def _curve_grid(s):
+    """A curve tuple's grid N (model.py: it trails the points when it is not 0)."""
+    return s[6] if len(s) > 6 else 0
+
+
+def strokes_bytes(strokes: Iterable, linear: bool = False, curve_grid: bool = False) -> bytes:
+    """The records of `strokes`; with `curve_grid` (the format 1.4 HEAD flag) a curve's grid N
+    follows its colour, without it a curve with a grid cannot be written."""
+    for s in strokes:
+        if s[0] == CURVE and _curve_grid(s) and not curve_grid:
+            raise SptError(f"curve with grid {_curve_grid(s)} in a file without the curve_grid flag")
     if linear:
-        return b"".join(_linear_record(s) for s in strokes)
+        return b"".join(_linear_record(s, curve_grid) for s in strokes)
     out = []
     append = out.append
     sp, ap = _STAMP.pack, _AFFINE.pack
@@ -33,7 +42,8 @@ def strokes_bytes(strokes: Iterable, linear: bool = False) -> bytes:
             append(ap(*s))
         elif k == CURVE:
             pts = s[5]
-            append(_CURVE_HEAD.pack(CURVE, s[1], s[2], s[3], s[4], len(pts)))
+            grid = (_curve_grid(s),) if curve_grid else ()
+            append(struct.pack("<BBBBB" + "B" * len(grid) + "I", CURVE, s[1], s[2], s[3], s[4], *grid, len(pts)))
             append(b"".join(struct.pack("<iiI", *p) for p in pts))
         elif k == POLYGON:
             pts = s[6]
@@ -45,7 +55,7 @@ def strokes_bytes(strokes: Iterable, linear: bool = False) -> bytes:
 
 
 
-def _linear_record(s) -> bytes:
+def _linear_record(s, curve_grid) -> bytes:
     k = s[0]
     if k == STAMP:
         return struct.pack("<BBBBiiBBBBBBB", *_split(s, 6))
@@ -53,7 +63,9 @@ def _linear_record(s) -> bytes:
         return struct.pack("<BBiiiiiiBBBBBBB", *_split(s, 8))
     if k == CURVE:
         t = _split(s, 1)
-        return struct.pack("<BBBBBBBBI", *t[:8], len(s[5])) + b"".join(struct.pack("<iiI", *p) for p in s[5])
+        grid = (_curve_grid(s),) if curve_grid else ()
+        return struct.pack("<BBBBBBBB" + "B" * len(grid) + "I", *t[:8], *grid, len(s[5])) + \
+            b"".join(struct.pack("<iiI", *p) for p in s[5])
     if k == POLYGON:
         t = _split(s, 1)
         return struct.pack("<BBBBBBBBBI", *t[:8], s[5], len(s[6])) + b"".join(struct.pack("<ii", *p) for p in s[6])
