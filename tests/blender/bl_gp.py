@@ -5,7 +5,7 @@ test checks what Blender holds rather than what the add-on believes it wrote.
 Strokes are proxies with the same names in both models: points (list of (x, y, z) metres, get
 and set), fill (scene-linear RGBA of the fill / vertex fill colour, get and set), material_index,
 cyclic, ordinal (the file's drawing order the import hid in the stroke, or -1), width_px (per
-point, curves). Edits an artist makes are functions here: move, rotate, delete, draw a line (as
+point, curves); material_index can be set (the Material panel's Assign). Edits an artist makes are functions here: move, rotate, delete, draw a line (as
 the Draw tool leaves it: no spt data), hide a layer, delete or insert a key frame."""
 
 import math
@@ -103,6 +103,10 @@ class _V2Stroke:
     def material_index(self):
         return self.s.material_index
 
+    @material_index.setter
+    def material_index(self, i):
+        self.s.material_index = i
+
     @property
     def cyclic(self):
         return bool(self.s.use_cyclic)
@@ -163,6 +167,11 @@ class _V3Stroke:
     def material_index(self):
         a = self.d.attributes.get("material_index")
         return a.data[self.i].value if a is not None else 0
+
+    @material_index.setter
+    def material_index(self, i):
+        a = self.d.attributes.get("material_index") or self.d.attributes.new("material_index", 'INT', 'CURVE')
+        a.data[self.i].value = i
 
     @property
     def cyclic(self):

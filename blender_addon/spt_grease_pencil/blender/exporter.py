@@ -6,7 +6,9 @@ them in their layer (or above the layers below theirs). Quads become stamps when
 a stamp of their set size and a table orientation, affine strokes otherwise; strokes of a polygon
 material (importer.polygon_materials) are polygons of that material's alpha and grid N, with their
 points as vertices (so an edited outline exports as edited, rounded to Q4); everything else is a
-curve. All of it on numpy StrokeTables (io/strokes_np.py): the live lists are coded as key/inter
+curve, of the grid N of its material's spt_curve_grid (importer.curve_materials; 0 without one),
+and the file has the HEAD flag curve_grid (format 1.4) when a curve has a grid N (or the imported
+file had it). All of it on numpy StrokeTables (io/strokes_np.py): the live lists are coded as key/inter
 frames (state_np.frames_from_tables: strokes that all moved with a block motion field, as in the
 painter's inter frames, are coded with that field again), written in stored mode by the Python
 writer, then range-coded by `spt pack`.
@@ -19,7 +21,7 @@ import numpy as np
 
 from ..io import colors, geometry, state_np, stream_json
 from ..io.geometry import points_to_curve
-from ..io.model import MAX_POS, POLYGON
+from ..io.model import CURVE, MAX_POS, POLYGON
 from ..io.model import Header, SptError, StreamInfo, default_orientations
 from ..io.strokes_np import A, B, CURVE_ID, G, GRID, KIND, NCOL, R, X, Y, StrokeTable
 from ..io.writer import write_stored
@@ -53,6 +55,7 @@ def _material_tables(obj):
     mats = list(obj.data.materials)
     tmpl = np.full(len(mats) + 1, -1, dtype=np.int64)   # last entry: stroke without material
     grid = np.full(len(mats) + 1, -1, dtype=np.int64)   # polygon materials: their grid N
+    curve_grid = np.zeros(len(mats) + 1, dtype=np.int64)  # curves: their material's grid N, else 0
     fill_base = np.ones((len(mats) + 1, 4), dtype=np.float64)
     line_base = np.zeros((len(mats) + 1, 4), dtype=np.float64)
     line_base[:, 3] = 1.0
@@ -61,9 +64,11 @@ def _material_tables(obj):
             tmpl[i] = int(m["spt_template"])
         elif m is not None and "spt_polygon_grid" in m:
             grid[i] = int(m["spt_polygon_grid"])
+        if m is not None and "spt_curve_grid" in m:
+            curve_grid[i] = int(m["spt_curve_grid"])
         fill_base[i] = gp.material_color(m, True)
         line_base[i] = gp.material_color(m, False)
-    return tmpl, fill_base, line_base, grid
+    return tmpl, fill_base, line_base, grid, curve_grid
 
 
 class CurvePool:
@@ -89,7 +94,7 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
     """The strokes of one GP frame as (rows (n, NCOL), ordinal (n,) or -1), in the frame's order;
     strokes that cannot be stored are left out with a warning."""
     h = info.header
-    tmpl_of, fill_base, line_base, grid_of = tables
+    tmpl_of, fill_base, line_base, grid_of, curve_grid_of = tables
     nmat = len(tmpl_of) - 1
     n = d.count
     mi = np.where((d.material_index >= 0) & (d.material_index < nmat), d.material_index, nmat)
@@ -125,10 +130,11 @@ def read_layer_frame(d, info: StreamInfo, tables, pool: CurvePool, where: str, w
         xy = co.astype(np.float64) * 1000.0
         widths = pr.astype(np.float64) * float(d.line_width[i])
         s = points_to_curve(zip(xy[:, 0].tolist(), (-xy[:, 2]).tolist(), widths.tolist()),
-                            tuple(file_values(rgb, h).tolist()) + (alpha,))
+                            tuple(file_values(rgb, h).tolist()) + (alpha,), int(curve_grid_of[mi[i]]))
         if s is None:
             keep[i] = False
-            warnings.append(f"{where}: a stroke out of range was left out")
+            warnings.append(f"{where}: a stroke out of range (or of a material with a reserved "
+                            f"spt_curve_grid {int(curve_grid_of[mi[i]])}) was left out")
             continue
         rows[i] = StrokeTable.from_tuples([s]).rows[0]
         rows[i, CURVE_ID] = pool.add(s[5])
@@ -233,6 +239,10 @@ def export_file(context, obj, path: str, spt_path: str = "", stored: bool = Fals
         if progress:
             progress(k + 1, count)
     held.clear()
+    # Format 1.4 only when a curve has a grid N; an imported file's flag stays, so that its
+    # unedited export keeps the file's records (a flagged file may hold grid-0 curves only).
+    info.header.curve_grid = info.header.curve_grid or any(
+        bool(((t.rows[:, KIND] == CURVE) & (t.rows[:, GRID] != 0)).any()) for t in lists)
     t_collect = time.perf_counter()
     blocks = [int(b) for b in obj.data.get("spt_motion_blocks", [])]
     blocks += [b for b in (16, 32) if b not in blocks]

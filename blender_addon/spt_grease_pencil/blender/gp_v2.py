@@ -10,7 +10,8 @@ moving, rotating and recolouring; none of it affects a fill-only material):
   line_width = set + 1               stroke set hint (ambiguous when two sets have one size)
   aspect[0] = 0.5 + alpha / 512      the colour's alpha (fills have no per-stroke opacity)
 Curves (GP lines, material without fill): uv_translation = (ordinal, 1); point pressure = width
-in px with line_width 1; point strength = alpha / 255.
+in px with line_width 1; point strength = alpha / 255. A curve's supersampling grid N (format 1.4)
+is its material's: one curve material per N used, spt_curve_grid = N (none for N = 0).
 Polygons (format 1.2; closed, cyclic, solid fill, no line): hardness = 0.5 + ordinal * 2^-24 as
 quads, line_width 1, aspect 1; vertex_color_fill = colour. A GPv2 stroke has no fill opacity of
 its own (the shader takes the fill's alpha from the material only), so the alpha and the grid N

@@ -26,7 +26,8 @@ Colours are FLOAT_COLOR attributes, which Blender 4.3 and 5.2 do not clamp (meas
 scene-linear values of colour encoding 1 files, HDR included, are stored as they are.
 Custom attributes travel with their strokes through Blender's edit operators (move, duplicate,
 delete, join), which is what makes an edited export exact. Polygon alpha and grid N live in the
-material, as in GPv2 (one material per (alpha, N): the exporter is shared by both backends).
+material, as in GPv2 (one material per (alpha, N): the exporter is shared by both backends), and
+so does a curve's grid N (format 1.4: one curve material per N, spt_curve_grid = N for N > 0).
 """
 
 import bpy

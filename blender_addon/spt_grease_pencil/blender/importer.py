@@ -156,6 +156,26 @@ def polygon_materials(obj, name, tables):
     return lookup
 
 
+def curve_materials(obj, name, tables):
+    """The curve materials: "<name> curve" for grid 0 (every curve of a file before format 1.4,
+    so those import as they always did) and one per other grid N the curves use (format 1.4),
+    which carries it as spt_curve_grid for export. Returns the lookup array grid -> material
+    index."""
+    grids = {0}
+    for t in tables:
+        line = t.rows[:, KIND] == CURVE
+        if line.any():
+            grids.update(np.unique(t.rows[line, GRID]).tolist())
+    lookup = np.full(17, -1, dtype=np.int32)
+    for g in sorted(grids):
+        mat = gp.curve_material(f"{name} curve" + (f" grid {g}" if g else ""))
+        mat["spt_curve"] = 1
+        if g:
+            mat["spt_curve_grid"] = g
+        lookup[g] = gp.add_material(obj, mat)
+    return lookup
+
+
 def import_file(context, path: str, spt_path: str = "", layering: str = 'AUTO', progress=None):
     """Returns (object, summary dict). Raises SptError / SptToolError with a readable message.
     summary["seconds"] splits the time: read (spt pack --stored + Python reader + live lists),
@@ -195,10 +215,8 @@ def _build(context, f, tables, path, layering, progress):
         mat = gp.template_material(f"{name} {t.name or 'template'} {ti}", img)
         mat["spt_template"] = ti
         tmat.append(gp.add_material(obj, mat))
-    cmat = gp.curve_material(f"{name} curve")
-    cmat["spt_curve"] = 1
-    cmat_index = gp.add_material(obj, cmat)
-    mat_of_tmpl = np.array(tmat + [cmat_index], dtype=np.int32)
+    mat_of_curve = curve_materials(obj, name, tables)
+    mat_of_tmpl = np.array(tmat + [mat_of_curve[0]], dtype=np.int32)
     mat_of_poly = polygon_materials(obj, name, tables)
 
     # Layers bottom to top: the stroke sets used (coarse to fine), shapes, curves; the kinds used;
@@ -230,7 +248,7 @@ def _build(context, f, tables, path, layering, progress):
         start = context.scene.frame_start
     total_strokes = 0
     for fi, table in enumerate(tables):
-        _fill_frame(table, start + fi, layer_of, layering, h, mat_of_tmpl, cmat_index, mat_of_poly)
+        _fill_frame(table, start + fi, layer_of, layering, h, mat_of_tmpl, mat_of_curve, mat_of_poly)
         total_strokes += len(table)
         if progress:
             progress(fi + 1, len(tables))
@@ -304,7 +322,7 @@ def frame_batch(table, idx, h, material, fill) -> StrokeBatch:
                        set_hint=rows[:, SET].astype(np.int64), alpha=rows[:, A].astype(np.int64))
 
 
-def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index, mat_of_poly):
+def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, mat_of_curve, mat_of_poly):
     """One file frame: a GP frame on every layer (an empty one where the layer has nothing, so
     the previous frame does not stay visible), each with its strokes in drawing order."""
     rows = table.rows
@@ -315,7 +333,8 @@ def _fill_frame(table, number, layer_of, layering, h, mat_of_tmpl, cmat_index, m
     quad = ~(is_curve | is_poly)
     fill = np.ones((n, 4), dtype=np.float32)
     fill[:, 0:3] = scene_linear(rows[:, R:B + 1], h)
-    material = np.where(is_curve, cmat_index, mat_of_tmpl[np.where(quad, rows[:, TMPL], 0)])
+    material = np.where(is_curve, mat_of_curve[np.where(is_curve, rows[:, GRID], 0)],
+                        mat_of_tmpl[np.where(quad, rows[:, TMPL], 0)])
     material = np.where(is_poly, mat_of_poly[_polygon_key(rows) % mat_of_poly.shape[0]], material)
     keys = _layer_keys(rows, layering, len(h.sets))
     for k, layer in layer_of.items():
