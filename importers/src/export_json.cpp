@@ -58,6 +58,7 @@ void stroke(std::string& o, const Stroke& s, bool linear) {
         case StrokeKind::Curve: {
             o += "{\"type\": \"curve\", ";
             color(o, s.curve.color, linear);
+            if (s.curve.supersample) o += ", \"supersample\": " + std::to_string(s.curve.supersample);
             o += ", \"points\": [";
             for (size_t i = 0; i < s.curve.points.size(); ++i) {
                 const auto& p = s.curve.points[i];
@@ -91,8 +92,9 @@ void stroke(std::string& o, const Stroke& s, bool linear) {
 
 std::string export_json(const Document& doc) {
     const Header& h = doc.info.header;
-    // Version 2 only when a polygon stroke needs it: other documents export as before.
-    bool polygons = false;
+    // Version 2 only when a polygon stroke or anti-aliased curves (format 1.4) need it: other
+    // documents export as before.
+    bool polygons = h.curve_grid;
     for (const Frame& f : doc.frames)
         for (const Stroke& s : f.added) polygons = polygons || s.kind == StrokeKind::Polygon;
     // Version 3 only for format 1.3 canvases (alpha, colour encoding 1).
@@ -108,6 +110,7 @@ std::string export_json(const Document& doc) {
         o += color_encoding_name(h.color);
         o += std::string("\", \"alpha\": ") + (h.alpha ? "true" : "false");
     }
+    if (h.curve_grid) o += ", \"curve_grid\": true";
     o += ", \"background\": [" + std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " + std::to_string(bg[2]) +
          "], \"fps\": [" + std::to_string(h.fps.num) + ", " + std::to_string(h.fps.den) + "]},\n";
     o += "  \"sets\": [";

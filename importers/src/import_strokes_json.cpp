@@ -319,6 +319,13 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
     } else if (t == "curve") {
         CurveStroke cv;
         if (!read_color(c, s, where, cv.color, e)) return false;
+        if (const Value* n = s.find("supersample")) {  // anti-aliased lines (format 1.4)
+            int64_t v;
+            if (c.version < 2) { e = c.err(*n, where + ".supersample needs version 2"); return false; }
+            if (!c.integer(*n, where + ".supersample", 0, 16, v, e)) return false;
+            if (v == 1) { e = c.err(*n, where + ".supersample must be 0 or 2..16"); return false; }
+            cv.supersample = uint8_t(v);
+        }
         const Value* f = points_field(c, s, where, 1, c.lim().max_curve_points, "points", e);
         if (!f) return false;
         for (size_t i = 0; i < f->items.size(); ++i) {
@@ -429,6 +436,14 @@ bool read_header(Ctx& c, const Value& root, Header& h, Error& e) {
         }
     }
     c.linear = enc == ColorEncoding::LinearHalf;
+    // Version 2: canvas.curve_grid (format 1.4) keeps a file's flag when none of its curves has a
+    // grid; a curve's "supersample" sets it too.
+    bool curve_grid = false;
+    if (const Value* g = canvas->find("curve_grid")) {
+        if (c.version < 2) { e = c.err(*g, "canvas.curve_grid needs version 2"); return false; }
+        if (g->type != Type::Bool) { e = c.err(*g, "canvas.curve_grid must be true or false"); return false; }
+        curve_grid = g->boolean;
+    }
     int64_t w, hh;
     const Value* f;
     if (!(f = field(c, *canvas, "width", "canvas", e)) || !c.integer(*f, "canvas.width", 1, c.lim().max_width, w, e)) return false;
@@ -451,6 +466,7 @@ bool read_header(Ctx& c, const Value& root, Header& h, Error& e) {
     h = default_header(uint32_t(w), uint32_t(hh), bg);
     h.color = enc;
     h.alpha = alpha;
+    h.curve_grid = curve_grid;
     h.background_lo = bg_lo;
     if ((f = canvas->find("fps"))) {
         if (f->is_array()) {
@@ -619,6 +635,9 @@ Result<Document> load(const std::string& path, std::string text, const ImportOpt
             doc.frames.push_back(std::move(fr));
         }
     }
+    for (const Frame& fr : doc.frames)
+        for (const Stroke& s : fr.added)
+            if (s.kind == StrokeKind::Curve && s.curve.supersample) doc.info.header.curve_grid = true;
     if (opts.background && doc.info.header.color == ColorEncoding::LinearHalf) {
         // The sRGB colour given, as linear codes.
         Rgba8 c;
