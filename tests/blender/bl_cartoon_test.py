@@ -5,7 +5,9 @@ the 4.3 and 5.2 roots have no OpenImageIO tools), painted with --style cartoon: 
 residual stamps, inter frames that keep, remove and add both (the first five frames, from 28,
 20, 36, ... on, in which polygons are added over kept stamps: the file's order crosses the
 layers). The add-on's default (Automatic) layering must give one layer per kind, "fills" (every
-polygon, as a closed fill-only stroke, in drawing order) below "paint" (the stamps); an
+polygon, as a closed fill-only stroke, in drawing order) below "lines" (the thin regions the
+painter draws as anti-aliased curves, format 1.4: open line strokes with widths) below "paint"
+(the stamps); an
 unedited export must give the same live lists stroke for stroke and, range coded, render the
 same pixels as the painting; a recoloured fill and a hidden layer export as edited, everything
 else in the file's order. The synthetic animation with curves adds "lines"; layering 'SETS'
@@ -25,7 +27,7 @@ zip_path, spt, work, media = C.args()
 C.install(zip_path, spt)
 import spt_samples  # noqa: E402  (after install: uses the installed add-on)
 from spt_grease_pencil.io import colors, read_file  # noqa: E402
-from spt_grease_pencil.io.model import AFFINE, CURVE, POLYGON, STAMP  # noqa: E402
+from spt_grease_pencil.io.model import AFFINE, CURVE, POLYGON, STAMP, curve_grid_of  # noqa: E402
 
 star = os.path.join(media, "cartoon", "star")
 C.check(os.path.isdir(star), f"no cartoon clip at {star} (the test needs the shared media)")
@@ -86,7 +88,13 @@ print(f"star frames {first}-{first + FRAMES - 1}")
 C.check(len(orig_lists) == FRAMES, f"{len(orig_lists)} frames painted")
 C.check(all(any(s[0] == POLYGON for s in l) and any(s[0] == STAMP for s in l) for l in orig_lists),
         "every frame holds polygons and residual stamps")
-C.check(not any(s[0] == CURVE for l in orig_lists for s in l), "the cartoon painter draws no curves")
+# Thin regions whose centreline curves are as close as their outlines are lines: anti-aliased
+# curves (format 1.4), a GP line stroke each, in a layer of their own.
+lines_drawn = sum(1 for l in orig_lists for s in l if s[0] == CURVE)
+print(f"{lines_drawn} lines")
+C.check(lines_drawn > 0, "the cartoon painter draws the star's thin outlines as lines")
+C.check(all(curve_grid_of(s) >= 2 for l in orig_lists for s in l if s[0] == CURVE), "every line is anti-aliased (a grid)")
+KINDS = ["fills", "lines", "paint"]
 
 # ------------------------------------------------------------------ layers after import
 opts = bpy.ops.import_scene.spt.get_rna_type().properties["layering"]
@@ -96,15 +104,22 @@ C.check(bpy.ops.import_scene.spt(filepath=painted) == {'FINISHED'}, "import with
 obj = [o for o in bpy.data.objects if o not in before and o.type == G.OBJECT_TYPE][0]
 gpd = obj.data
 names = G.layer_names(obj)
-C.check(names == ["fills", "paint"], f"one layer per kind, fills below paint: {names}")
+C.check(names == KINDS, f"one layer per kind, fills below lines below paint: {names}")
 scene = bpy.context.scene
-fills, paint = G.layer(obj, "fills"), G.layer(obj, "paint")
+fills, lines, paint = G.layer(obj, "fills"), G.layer(obj, "lines"), G.layer(obj, "paint")
 interleaved = 0
 for fi, lst in enumerate(orig_lists):
     got_f = G.strokes(G.frame(fills, scene.frame_start + fi))
     got_p = G.strokes(G.frame(paint, scene.frame_start + fi))
     want_f = [k for k, s in enumerate(lst) if s[0] == POLYGON]
     want_p = [k for k, s in enumerate(lst) if s[0] in (STAMP, AFFINE)]
+    got_l = G.strokes(G.frame(lines, scene.frame_start + fi))
+    want_l = [k for k, s in enumerate(lst) if s[0] == CURVE]
+    C.check([g.ordinal for g in got_l] == want_l, f"frame {fi}: lines holds the curves in drawing order")
+    for g in got_l:
+        mat = gpd.materials[g.material_index]
+        C.check(mat.get("spt_curve_grid", 0) == curve_grid_of(lst[g.ordinal]), "a line's material carries its grid")
+        C.check(mat.grease_pencil.show_stroke and not g.cyclic, "a line is an open line stroke")
     C.check([g.ordinal for g in got_f] == want_f, f"frame {fi}: fills holds the polygons in drawing order")
     C.check([g.ordinal for g in got_p] == want_p, f"frame {fi}: paint holds the stamps in drawing order")
     interleaved += sum(1 for k in want_f if want_p and k > want_p[0])
@@ -136,7 +151,7 @@ C.check(got[fi] == want, "a recoloured fill exports recoloured, in its place")
 C.check(got[:fi] == orig_lists[:fi] and got[fi + 1:] == orig_lists[fi + 1:], "other frames unchanged")
 G.hide_layer(obj, "paint")
 got = C.export_spt(obj, os.path.join(work, "fills-only.spt"))
-C.check(got[0] == [s for s in orig_lists[0] if s[0] == POLYGON], "hiding paint leaves the fills alone")
+C.check(got[0] == [s for s in orig_lists[0] if s[0] in (POLYGON, CURVE)], "hiding paint leaves fills and lines alone")
 G.hide_layer(obj, "paint", False)
 bpy.data.objects.remove(obj)
 
@@ -151,7 +166,7 @@ for fi, lst in enumerate(sample):
             == [k for k, s in enumerate(lst) if s[0] == CURVE], f"frame {fi}: lines holds the curves")
 C.check(C.export_spt(obj, os.path.join(work, "sample-kinds.spt")) == sample, "per-kind layers export exactly")
 obj = C.import_spt(painted, 'SETS')
-C.check(G.layer_names(obj)[-1] == "shapes" and G.layer_names(obj)[0].startswith("set "),
-        f"layering SETS keeps the per-set layers: {G.layer_names(obj)}")
+C.check(G.layer_names(obj)[-2:] == ["shapes", "curves"] and G.layer_names(obj)[0].startswith("set "),
+        f"layering SETS keeps the per-set layers, then shapes and the lines' curves: {G.layer_names(obj)}")
 C.check(C.export_spt(obj, os.path.join(work, "sets.spt")) == orig_lists, "per-set layers export exactly")
 print("OK")

@@ -53,9 +53,16 @@ CartoonStats paint_cartoon(const paint::ImageView& model, Canvas& canvas, const 
     FillLayer fill = fill_for_target(rgb, setup.header.background, renderer, fo, po.target_psnr, nullptr, canvas, fill_psnr);
     st.colors = fill.colors;
     st.regions = fill.regions;
-    st.polygons = fill.strokes.size();
     st.grid = fill.grid;
-    for (const Stroke& s : fill.strokes) st.vertices += s.polygon.points.size();
+    for (const Stroke& s : fill.strokes) {
+        if (s.kind == StrokeKind::Curve) {
+            ++st.lines;
+            st.line_points += s.curve.points.size();
+        } else {
+            ++st.polygons;
+            st.vertices += s.polygon.points.size();
+        }
+    }
     st.fill_psnr = fill_psnr;
     out.insert(out.end(), std::make_move_iterator(fill.strokes.begin()), std::make_move_iterator(fill.strokes.end()));
     st.stamps.psnr = st.fill_psnr;

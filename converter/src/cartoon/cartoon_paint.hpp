@@ -25,6 +25,7 @@ constexpr double kResidualLambdaScale = 16;
 
 struct CartoonStats {
     size_t colors = 0, regions = 0, polygons = 0, vertices = 0;
+    size_t lines = 0, line_points = 0;  // thin regions drawn as curves
     uint8_t grid = 0;
     double fill_psnr = 0;        // after the polygons
     paint::PaintStats stamps;    // the residual painting (stamps.psnr: the final PSNR)

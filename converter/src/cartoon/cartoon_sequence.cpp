@@ -40,6 +40,8 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     setup.header.fps = fps;
     rep.fps = fps;
     setup.header.frame_count = kUnknownFrameCount;
+    // Lines are curves with a grid (format 1.4); decided before the first frame is painted.
+    setup.header.curve_grid = opts.fill.lines;
     auto renderer = Renderer::create(setup.header, setup.templates);
     if (!renderer) return renderer.error();
     StreamInfo info;

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 
+#include "cartoon/line_trace.hpp"
 #include "cartoon/mask_pixels.hpp"
+#include "cartoon/shape_cost.hpp"
 #include "cartoon/regions.hpp"
 
 namespace spt::cartoon {
@@ -14,19 +17,26 @@ namespace {
 
 // Squared error of a region's polygons (grid 8) drawn over the colour it lies on, against the
 // source, on the pixels they cover or the region holds.
-double local_error(const cv::Mat& rgb, const Regions& regs, int index, const std::vector<PolygonStroke>& polys,
-                   const Renderer& renderer) {
+// With `below` (the fill layer drawn so far), the strokes are drawn on it instead of on the
+// region's surrounding colour, and pixels of regions drawn later are left out (they will hide
+// what is drawn there: a polygon reaches under them on purpose, a line does not).
+double local_error(const cv::Mat& rgb, const Regions& regs, int index, const std::vector<Stroke>& strokes,
+                   const Renderer& renderer, const Canvas* below = nullptr) {
+    const bool visible_only = below != nullptr;
     const Region& reg = regs.list[size_t(index)];
     const cv::Rect img(0, 0, rgb.cols, rgb.rows);
     const cv::Rect box = cv::Rect(reg.box.x - 4, reg.box.y - 4, reg.box.width + 8, reg.box.height + 8) & img;
     cv::Mat drawn(box.size(), CV_8UC3, cv::Scalar(reg.around[0], reg.around[1], reg.around[2]));
+    if (below)
+        for (int y = 0; y < box.height; ++y) std::memcpy(drawn.ptr(y), below->row(uint32_t(box.y + y)) + 3 * box.x, size_t(3 * box.width));
     cv::Mat touched(box.size(), CV_8U, cv::Scalar(0));
     Mask m;
-    for (const PolygonStroke& p : polys) {
-        PolygonStroke q = p;
-        q.supersample = 8;
-        if (!renderer.stroke_mask(Stroke::make_polygon(std::move(q)), m)) continue;
-        const uint8_t c[3] = {p.color.r, p.color.g, p.color.b};
+    for (const Stroke& s : strokes) {
+        Stroke q = s;
+        (q.kind == StrokeKind::Polygon ? q.polygon.supersample : q.curve.supersample) = 8;
+        if (!renderer.stroke_mask(q, m)) continue;
+        const Rgba8 col = s.color();
+        const uint8_t c[3] = {col.r, col.g, col.b};
         visit_covered(m, box.x + box.width, box.y + box.height, [&](int32_t px, int32_t py, size_t, uint8_t a) {
             if (px < box.x || py < box.y) return;
             cv::Vec3b& d = drawn.at<cv::Vec3b>(py - box.y, px - box.x);
@@ -37,12 +47,49 @@ double local_error(const cv::Mat& rgb, const Regions& regs, int index, const std
     double e = 0;
     for (int y = 0; y < box.height; ++y)
         for (int x = 0; x < box.width; ++x) {
-            if (!touched.at<uint8_t>(y, x) && regs.id.at<int>(box.y + y, box.x + x) != index) continue;
+            const int id = regs.id.at<int>(box.y + y, box.x + x);
+            if (!touched.at<uint8_t>(y, x) && id != index) continue;
+            if (visible_only && id > index) continue;
             const cv::Vec3b& a = drawn.at<cv::Vec3b>(y, x);
             const cv::Vec3b& b = rgb.at<cv::Vec3b>(box.y + y, box.x + x);
             for (int k = 0; k < 3; ++k) e += double(int(a[k]) - int(b[k])) * double(int(a[k]) - int(b[k]));
         }
     return e;
+}
+
+std::vector<Stroke> as_strokes(std::vector<PolygonStroke> polys) {
+    std::vector<Stroke> v;
+    for (PolygonStroke& p : polys) v.push_back(Stroke::make_polygon(std::move(p)));
+    return v;
+}
+
+double strokes_bytes(const std::vector<Stroke>& v) {
+    double b = 0;
+    for (const Stroke& s : v) b += shape_bytes(s, 6);
+    return b;
+}
+
+// Region `index` as lines, when it is thin and its curves (at the best of a few widths) are no
+// farther from the source than `polys` and cost fewer bytes. Empty otherwise.
+std::vector<Stroke> lines_instead(const cv::Mat& rgb, const Regions& regs, int index, const std::vector<Stroke>& polys,
+                                  const Renderer& renderer, const Canvas& below, const LineOptions& opts) {
+    const LineShape shape = centrelines(regs, index);
+    if (!is_line(shape, opts)) return {};
+    const cv::Vec3b c = regs.list[size_t(index)].color;
+    const Rgba8 color{c[0], c[1], c[2], 255};
+    const double poly_err = local_error(rgb, regs, index, polys, renderer, &below);
+    std::vector<Stroke> best;
+    double best_err = 0;
+    for (double widen : {-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0}) {
+        std::vector<Stroke> v;
+        for (CurveStroke& cv : line_curves(shape, color, widen, 8, opts)) v.push_back(Stroke::make_curve(std::move(cv)));
+        const double e = local_error(rgb, regs, index, v, renderer, &below);
+        if (best.empty() || e < best_err) { best = std::move(v); best_err = e; }
+    }
+    // As close (within 2%) and smaller: the stamps that follow pay for any error left, so a
+    // line that is farther from the source is no saving.
+    if (best_err <= poly_err * 1.02 + 1 && strokes_bytes(best) < strokes_bytes(polys)) return best;
+    return {};
 }
 
 }  // namespace
@@ -56,21 +103,34 @@ FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& 
     if (palette.empty()) return out;
     Regions regs = find_regions(rgb, label_pixels(rgb, palette), palette, opts.min_region_pixels);
     out.regions = regs.list.size();
+    Canvas built(uint32_t(rgb.cols), uint32_t(rgb.rows), background);  // the layer so far, for the line test
     for (int i = 0; i < int(regs.list.size()); ++i) {
         Region& reg = regs.list[size_t(i)];
         const cv::Vec3b c = reg.color;
         // The first region in the background's colour is the canvas itself.
         if (i == 0 && std::max({std::abs(c[0] - background.r), std::abs(c[1] - background.g), std::abs(c[2] - background.b)}) <= 2)
             continue;
-        std::vector<PolygonStroke> polys = trace_region(rgb, regs, i, opts.trace);
+        std::vector<Stroke> polys = as_strokes(trace_region(rgb, regs, i, opts.trace));
         if (reg.ink_candidate && reg.ink != reg.color) {
             // Traced in its ink too; the closer wins (later regions trace against the winner).
             reg.color = reg.ink;
-            std::vector<PolygonStroke> inked = trace_region(rgb, regs, i, opts.trace);
+            std::vector<Stroke> inked = as_strokes(trace_region(rgb, regs, i, opts.trace));
             if (local_error(rgb, regs, i, inked, renderer) < local_error(rgb, regs, i, polys, renderer)) polys = std::move(inked);
             else reg.color = c;
         }
-        for (PolygonStroke& p : polys) out.strokes.push_back(Stroke::make_polygon(std::move(p)));
+        if (opts.lines)
+            if (std::vector<Stroke> l = lines_instead(rgb, regs, i, polys, renderer, built, opts.line); !l.empty()) {
+                polys = std::move(l);
+                ++out.lines;
+            }
+        for (Stroke& s : polys) {
+            if (opts.lines) {
+                Stroke d = s;
+                (d.kind == StrokeKind::Curve ? d.curve.supersample : d.polygon.supersample) = 8;
+                (void)renderer.draw(built, d);
+            }
+            out.strokes.push_back(std::move(s));
+        }
     }
 
     // The grid whose rendering is closest to the source (smaller grids on ties: faster).
@@ -80,6 +140,7 @@ FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& 
     for (uint8_t g : opts.grids) {
         uint64_t work = 0;
         for (Stroke& s : out.strokes) {
+            if (s.kind == StrokeKind::Curve) { s.curve.supersample = g; continue; }
             s.polygon.supersample = g;
             work += polygon_render_work(s.polygon, H);
         }
@@ -96,7 +157,7 @@ FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& 
             out.grid = g;
         }
     }
-    for (Stroke& s : out.strokes) s.polygon.supersample = out.grid;
+    for (Stroke& s : out.strokes) (s.kind == StrokeKind::Curve ? s.curve.supersample : s.polygon.supersample) = out.grid;
     return out;
 }
 

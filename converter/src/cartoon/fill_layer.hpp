@@ -7,6 +7,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "cartoon/line_trace.hpp"
 #include "cartoon/palette.hpp"
 #include "cartoon/trace.hpp"
 #include "spt/render.hpp"
@@ -23,11 +24,16 @@ struct FillOptions {
     std::vector<uint8_t> grids{4, 8};   // supersampling grids tried; the least error wins
     // Bound on the polygons' rendering work (SPEC.md 10), well inside the readers' 2^28.
     uint64_t max_work = uint64_t(1) << 26;
+    // Thin regions become curves along their centreline where those are as close to the source
+    // and smaller (format 1.4: the file needs the curve_grid flag).
+    bool lines = true;
+    LineOptions line;
 };
 
 struct FillLayer {
-    std::vector<Stroke> strokes;        // polygons, drawing order
-    uint8_t grid = 0;                   // the supersampling grid chosen
+    std::vector<Stroke> strokes;        // polygons and lines (curves), drawing order
+    uint8_t grid = 0;                   // the supersampling grid chosen (polygons and curves)
+    size_t lines = 0;                   // regions drawn as curves
     size_t colors = 0, regions = 0;
     std::vector<cv::Vec3b> palette;     // the flat colours used
     double tolerance = 0;               // the outline tolerance (fill_for_target)

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "cartoon/draw_order.hpp"
+#include "cartoon/shape_cost.hpp"
 
 namespace spt::cartoon {
 
@@ -18,6 +19,15 @@ cv::Rect stroke_box(const Stroke& s, const Renderer& renderer, int W, int H) {
         }
         return cv::Rect(cv::Point(x0 >> 4, y0 >> 4), cv::Point((x1 >> 4) + 1, (y1 >> 4) + 1)) & canvas;
     }
+    if (s.kind == StrokeKind::Curve && !s.curve.points.empty()) {
+        int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+        for (const CurvePoint& p : s.curve.points) {
+            const int64_t r = p.width / 2 + 16;  // half the width, and the samples' half pixel
+            x0 = std::min(x0, p.x - r); x1 = std::max(x1, p.x + r);
+            y0 = std::min(y0, p.y - r); y1 = std::max(y1, p.y + r);
+        }
+        return cv::Rect(cv::Point(int(x0 >> 4), int(y0 >> 4)), cv::Point(int(x1 >> 4) + 1, int(y1 >> 4) + 1)) & canvas;
+    }
     if (s.kind == StrokeKind::Stamp) {
         const Mask& m = renderer.stamp_footprint(s.stamp.set, s.stamp.tmpl, s.stamp.orient);
         const int cx = Renderer::stamp_pixel(s.stamp.x), cy = Renderer::stamp_pixel(s.stamp.y);
@@ -28,12 +38,22 @@ cv::Rect stroke_box(const Stroke& s, const Renderer& renderer, int W, int H) {
 
 namespace {
 
-// A polygon as a key for exact lookup.
-std::vector<int32_t> key_of(const PolygonStroke& p) {
-    std::vector<int32_t> k{p.color.r, p.color.g, p.color.b, p.color.a, p.supersample};
+// A shape (polygon or line) as a key for exact lookup.
+std::vector<int32_t> key_of(const Stroke& s) {
+    const Rgba8& c = s.color();
+    if (s.kind == StrokeKind::Curve) {
+        std::vector<int32_t> k{-1, c.r, c.g, c.b, c.a, s.curve.supersample};
+        for (const CurvePoint& p : s.curve.points) { k.push_back(p.x); k.push_back(p.y); k.push_back(int32_t(p.width)); }
+        return k;
+    }
+    const PolygonStroke& p = s.polygon;
+    std::vector<int32_t> k{c.r, c.g, c.b, c.a, p.supersample};
     for (const PolygonVertex& v : p.points) { k.push_back(v.x); k.push_back(v.y); }
     return k;
 }
+
+// Polygons and lines are what the fill layer traces; stamps and the rest are not.
+bool is_shape(const Stroke& s) { return s.kind == StrokeKind::Polygon || s.kind == StrokeKind::Curve; }
 
 // Which polygon of the new frame shows at each pixel: the last one covering it fully (-1:
 // none). A polygon is hidden where a later one covers it fully, so its outline there does not
@@ -128,7 +148,7 @@ constexpr int64_t kLeftOutBytes = 64;
 
 // Roughly what coding a stroke again costs, bytes: a polygon's vertices, a stamp.
 int64_t stroke_bytes(const Stroke& s) {
-    return s.kind == StrokeKind::Polygon ? 8 + 2 * int64_t(s.polygon.points.size()) : 6;
+    return int64_t(shape_bytes(s, 6));
 }
 
 // What the stamps that correct a stand-in's coverage difference (`diff`, 255 a pixel) cost,
@@ -158,7 +178,7 @@ FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stro
     const std::vector<int32_t> owner = top_owner(polygons, renderer, W, H);
     std::map<std::vector<int32_t>, std::vector<uint32_t>> where;  // old polygon -> its indices
     for (uint32_t i = 0; i < old_live.size(); ++i)
-        if (old_live[i].kind == StrokeKind::Polygon) where[key_of(old_live[i].polygon)].push_back(i);
+        if (is_shape(old_live[i])) where[key_of(old_live[i])].push_back(i);
     std::vector<char> keep(old_live.size(), 0);
     // For the cascade's cost: the new polygons' boxes, which of them an old polygon of the same
     // colour and box could stand for, and the old stamps' boxes.
@@ -170,10 +190,10 @@ FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stro
     }
     std::vector<char> likely_kept(polygons.size(), 0);
     for (size_t k = 0; k < polygons.size(); ++k) {
-        if (where.count(key_of(polygons[k].polygon))) { likely_kept[k] = 1; continue; }
+        if (where.count(key_of(polygons[k]))) { likely_kept[k] = 1; continue; }
         for (uint32_t i = 0; i < old_live.size() && !likely_kept[k]; ++i)
-            likely_kept[k] = old_live[i].kind == StrokeKind::Polygon &&
-                             same_colour(old_live[i].polygon.color, polygons[k].polygon.color) &&
+            likely_kept[k] = old_live[i].kind == polygons[k].kind &&
+                             same_colour(old_live[i].color(), polygons[k].color()) &&
                              box_offset(old_boxes[i], boxes[k]) <= 1;
     }
     FrameDiff d;
@@ -187,7 +207,7 @@ FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stro
         const Stroke& s = polygons[j];
         const cv::Rect& box = boxes[j];
         bool kept = false;
-        auto it = where.find(key_of(s.polygon));
+        auto it = where.find(key_of(s));
         if (it != where.end() && !cover.hits(s, box, renderer)) {
             for (uint32_t i : it->second)
                 if (!keep[i] && order.fits(old_live[i], i, renderer)) {
@@ -214,9 +234,9 @@ FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stro
         if (!kept && !under_added)
             for (uint32_t i = 0; i < old_live.size(); ++i) {
                 const Stroke& o = old_live[i];
-                if (o.kind != StrokeKind::Polygon || keep[i]) continue;
-                const bool same = same_colour(o.polygon.color, s.polygon.color);
-                if (!same && !(opts.stand_ins && same_colour(o.polygon.color, s.polygon.color, kStandInColour))) continue;
+                if (o.kind != s.kind || keep[i]) continue;
+                const bool same = same_colour(o.color(), s.color());
+                if (!same && !(opts.stand_ins && same_colour(o.color(), s.color(), kStandInColour))) continue;
                 const cv::Rect& ob = old_boxes[i];
                 const int off = box_offset(ob, box);
                 if (off > (opts.stand_ins ? kStandInBox : 1)) continue;
@@ -258,7 +278,7 @@ FrameDiff diff_frame(const std::vector<Stroke>& old_live, const std::vector<Stro
         }
     }
     for (uint32_t i = 0; i < old_live.size(); ++i) {
-        if (old_live[i].kind == StrokeKind::Polygon || keep[i]) continue;
+        if (is_shape(old_live[i]) || keep[i]) continue;
         // A stamp keeps its place in the old order; it goes where an added polygon draws (it
         // would be drawn under it). Whether the others still help is stamp_keep.hpp's rule.
         if (old_live[i].kind != StrokeKind::Stamp) continue;

@@ -4,6 +4,7 @@
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/frame_diff.hpp"
+#include "cartoon/shape_cost.hpp"
 #include "cartoon/stamp_keep.hpp"
 #include "spt/reader.hpp"
 
@@ -12,7 +13,7 @@ namespace spt::cartoon {
 double frame_cost(const Frame& f) {
     double c = 0.3 * double(f.removed.size());
     for (const Stroke& s : f.added)
-        c += s.kind == StrokeKind::Polygon ? 8.0 + 2.0 * double(s.polygon.points.size()) : 5.6;
+        c += shape_bytes(s, 5.6);
     return c;
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "cartoon/frame_diff.hpp"
+#include "cartoon/shape_cost.hpp"
 #include "spt/reader.hpp"
 
 namespace spt::cartoon {
@@ -69,7 +70,7 @@ std::vector<int32_t> shape_key(const PolygonStroke& p) {
 
 // What keeping a stroke saves, roughly in coded bytes: a polygon's vertices, or a stamp.
 int64_t weight(const Stroke& s) {
-    return s.kind == StrokeKind::Polygon ? 8 + 2 * int64_t(s.polygon.points.size()) : 6;
+    return int64_t(shape_bytes(s, 6));
 }
 
 }  // namespace

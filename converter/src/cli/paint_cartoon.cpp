@@ -25,6 +25,7 @@ int fail(const std::string& msg) { return command_failed("paint", msg); }
 
 cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
     cartoon::FillOptions f;
+    f.lines = o.lines;
     if (o.outline_tolerance > 0) {
         f.trace.epsilon = o.outline_tolerance;
         f.search_tolerance = false;
@@ -73,6 +74,8 @@ Result<uint64_t> paint_write(const PaintCommandOptions& o, const paint::ImageVie
     StreamInfo info;
     info.header = setup.header;
     info.templates = setup.templates;
+    // Lines are curves with a grid (format 1.4); a painting without them stays 1.2.
+    for (const Stroke& s : strokes) info.header.curve_grid = info.header.curve_grid || (s.kind == StrokeKind::Curve && s.curve.supersample);
     if (st.stamps.strokes == 0) {
         // Polygons only: the stamps' sets, orientations and templates (about 400 bytes, a
         // third of a flat cartoon frame) are not needed to decode it.
@@ -148,9 +151,10 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
         if (Status p = io::write_image(o.preview, canvas); !p) return fail(p.error().message);
     if (o.progress != io::ProgressMode::None)
         std::fprintf(stderr,
-                     "spt paint: %s: %zu colours, %zu regions, %zu polygons (%zu vertices, grid %d) %.2f dB; "
-                     "%llu stamps; %.2f dB PSNR, %llu bytes, %.2f s\n",
-                     o.output.c_str(), st.colors, st.regions, st.polygons, st.vertices, int(st.grid), st.fill_psnr,
+                     "spt paint: %s: %zu colours, %zu regions, %zu polygons (%zu vertices), %zu lines (%zu points), "
+                     "grid %d, %.2f dB; %llu stamps; %.2f dB PSNR, %llu bytes, %.2f s\n",
+                     o.output.c_str(), st.colors, st.regions, st.polygons, st.vertices, st.lines, st.line_points,
+                     int(st.grid), st.fill_psnr,
                      (unsigned long long)st.stamps.strokes, st.stamps.psnr, (unsigned long long)bytes, secs);
     return 0;
 }

@@ -143,6 +143,9 @@ void declare(Args& a) {
                                          "most N bytes (N/s: per second of a clip); reports where it landed")
         .option("outline-tolerance", "PX", "--style cartoon: how far (pixels) a polygon's outline may leave "
                                            "the traced edge (default 0.35)")
+        .flag("no-lines", "--style cartoon: trace thin regions as polygons only. By default a thin region "
+                          "whose centreline curves are as close and smaller is drawn as lines: anti-aliased "
+                          "curves with widths (format 1.4; Grease Pencil line strokes)")
         .group("colour and alpha")
         .option("color-encoding", "MODE", "stroke colours: srgb8 (8-bit sRGB, as before format 1.3), linear (half "
                                           "floats of scene-linear Rec.709: values above 1 and smooth darks, for "
@@ -280,6 +283,7 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
     }
     if (a.has("outline-tolerance") && !parse_double(v("outline-tolerance"), 0.01, 100, o.outline_tolerance))
         return bad("--outline-tolerance: expected 0.01..100 pixels, got '" + v("outline-tolerance") + "'");
+    o.lines = !a.has("no-lines");
     long n = 0;
     if (a.has("seed") && !parse_u64(v("seed"), o.paint.seed))
         return bad("--seed: expected an unsigned integer, got '" + v("seed") + "'");
@@ -393,7 +397,7 @@ std::string PaintCommandOptions::canonical() const {
       << " orient=" << orient_name(paint.orient) << " templates=" << (templates_dir.empty() ? "builtin" : "custom")
       << " background=" << int(background.r) << ',' << int(background.g) << ',' << int(background.b)
       << " rois=" << rois.size();
-    if (style != "painterly") s << " style=" << style << " outline-tolerance=" << outline_tolerance;  // painterly files keep their bytes
+    if (style != "painterly") s << " style=" << style << " outline-tolerance=" << outline_tolerance << " lines=" << (lines ? 1 : 0);  // painterly files keep their bytes
     // Only when not the defaults, so that the files of earlier versions keep their bytes.
     if (color_encoding != "auto") s << " color-encoding=" << color_encoding;
     if (alpha != "auto") s << " alpha=" << alpha;

@@ -1,0 +1,191 @@
+#include "cartoon/line_trace.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/ximgproc.hpp>
+
+namespace spt::cartoon {
+
+namespace {
+
+// Skeleton neighbours: the 4-neighbours, and the diagonal ones not reached through a
+// 4-neighbour (a staircase is one path, not a triangle of three). Symmetric.
+int neighbours(const cv::Mat& sk, cv::Point p, cv::Point out[8]) {
+    auto on = [&](int x, int y) { return x >= 0 && y >= 0 && x < sk.cols && y < sk.rows && sk.at<uint8_t>(y, x); };
+    int n = 0;
+    const bool e = on(p.x + 1, p.y), w = on(p.x - 1, p.y), s = on(p.x, p.y + 1), nn = on(p.x, p.y - 1);
+    if (e) out[n++] = {p.x + 1, p.y};
+    if (w) out[n++] = {p.x - 1, p.y};
+    if (s) out[n++] = {p.x, p.y + 1};
+    if (nn) out[n++] = {p.x, p.y - 1};
+    if (on(p.x + 1, p.y + 1) && !e && !s) out[n++] = {p.x + 1, p.y + 1};
+    if (on(p.x - 1, p.y + 1) && !w && !s) out[n++] = {p.x - 1, p.y + 1};
+    if (on(p.x + 1, p.y - 1) && !e && !nn) out[n++] = {p.x + 1, p.y - 1};
+    if (on(p.x - 1, p.y - 1) && !w && !nn) out[n++] = {p.x - 1, p.y - 1};
+    return n;
+}
+
+uint64_t edge_key(cv::Point a, cv::Point b) {
+    auto k = [](cv::Point p) { return (uint64_t(uint32_t(p.y)) << 16) | uint32_t(p.x); };
+    const uint64_t ka = k(a), kb = k(b);
+    return ka < kb ? (ka << 32) | kb : (kb << 32) | ka;
+}
+
+// Douglas-Peucker over position (and width: a point whose width differs from the chord's
+// interpolation by more than width_eps stays).
+void simplify(const std::vector<cv::Point2d>& p, const std::vector<double>& w, size_t a, size_t b, double eps,
+              double width_eps, std::vector<char>& keep) {
+    if (b <= a + 1) return;
+    const cv::Point2d d = p[b] - p[a];
+    const double len = std::hypot(d.x, d.y);
+    double worst = 0;
+    size_t at = 0;
+    for (size_t i = a + 1; i < b; ++i) {
+        const cv::Point2d q = p[i] - p[a];
+        const double dist = len > 0 ? std::abs(q.x * d.y - q.y * d.x) / len : std::hypot(q.x, q.y);
+        const double t = double(i - a) / double(b - a);
+        const double dw = std::abs(w[i] - (w[a] + t * (w[b] - w[a]))) * eps / width_eps;
+        const double e = std::max(dist, dw);
+        if (e > worst) { worst = e; at = i; }
+    }
+    if (worst <= eps) return;
+    keep[at] = 1;
+    simplify(p, w, a, at, eps, width_eps, keep);
+    simplify(p, w, at, b, eps, width_eps, keep);
+}
+
+// The skeleton's branches as pixel paths: from every end and junction to the next one, then
+// the closed loops left.
+std::vector<std::vector<cv::Point>> branches(const cv::Mat& sk) {
+    std::vector<std::vector<cv::Point>> out;
+    std::unordered_set<uint64_t> used;  // skeleton edges walked
+    auto walk = [&](cv::Point start, cv::Point first) {
+        std::vector<cv::Point> path{start};
+        used.insert(edge_key(start, first));
+        cv::Point prev = start, cur = first;
+        for (;;) {
+            path.push_back(cur);
+            cv::Point nb[8];
+            const int n = neighbours(sk, cur, nb);
+            if (n != 2) break;  // an end or a junction
+            const cv::Point next = nb[0] == prev ? nb[1] : nb[0];
+            if (used.count(edge_key(cur, next))) break;  // a loop closed
+            used.insert(edge_key(cur, next));
+            prev = cur;
+            cur = next;
+        }
+        out.push_back(std::move(path));
+    };
+    std::vector<cv::Point> pixels;
+    cv::findNonZero(sk, pixels);
+    for (int pass = 0; pass < 2; ++pass)
+        for (const cv::Point& p : pixels) {
+            cv::Point nb[8];
+            const int n = neighbours(sk, p, nb);
+            if (n == 0) {
+                if (pass == 0) out.push_back({p});
+                continue;
+            }
+            if (pass == 0 && n == 2) continue;
+            for (int k = 0; k < n; ++k)
+                if (!used.count(edge_key(p, nb[k]))) walk(p, nb[k]);
+        }
+    return out;
+}
+
+}  // namespace
+
+LineShape centrelines(const Regions& regs, int index) {
+    LineShape out;
+    const Region& reg = regs.list[size_t(index)];
+    const cv::Rect img(0, 0, regs.id.cols, regs.id.rows);
+    const cv::Rect box = cv::Rect(reg.box.x - 1, reg.box.y - 1, reg.box.width + 2, reg.box.height + 2) & img;
+    // Padded by a pixel of outside, so that the distance transform sees the canvas edge as
+    // outside too and thinning has room.
+    cv::Mat mask(box.height + 2, box.width + 2, CV_8U, cv::Scalar(0));
+    for (int y = 0; y < box.height; ++y)
+        for (int x = 0; x < box.width; ++x)
+            if (regs.id.at<int>(box.y + y, box.x + x) == index) {
+                mask.at<uint8_t>(y + 1, x + 1) = 255;
+                ++out.pixels;
+            }
+    if (out.pixels == 0) return out;
+    cv::Mat sk, dist;
+    cv::ximgproc::thinning(mask, sk, cv::ximgproc::THINNING_ZHANGSUEN);
+    cv::distanceTransform(mask, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    // Spurs: a branch from an end to a junction no longer than the line is wide there is the
+    // thinning's answer to a corner or a bump, not a line; dropped, its junction joins the
+    // branches on either side into one.
+    for (const std::vector<cv::Point>& b : branches(sk)) {
+        if (b.size() < 2) continue;
+        cv::Point nb[8];
+        const int na = neighbours(sk, b.front(), nb), nz = neighbours(sk, b.back(), nb);
+        const bool spur_a = na == 1 && nz >= 3, spur_z = nz == 1 && na >= 3;
+        if (!spur_a && !spur_z) continue;
+        const cv::Point j = spur_a ? b.back() : b.front();
+        if (double(b.size()) > std::max(3.0, 2.0 * double(dist.at<float>(j.y, j.x)))) continue;
+        for (const cv::Point& p : b)
+            if (p != j) sk.at<uint8_t>(p.y, p.x) = 0;
+    }
+    const cv::Point origin(box.x - 1, box.y - 1);  // mask pixel -> canvas pixel
+    for (std::vector<cv::Point>& b : branches(sk)) {
+        Centreline c;
+        for (cv::Point& p : b) {
+            c.radius.push_back(double(dist.at<float>(p.y, p.x)));
+            c.pts.push_back(p + origin);
+        }
+        for (size_t i = 1; i < c.pts.size(); ++i)
+            out.length += std::hypot(double(c.pts[i].x - c.pts[i - 1].x), double(c.pts[i].y - c.pts[i - 1].y));
+        out.paths.push_back(std::move(c));
+    }
+    return out;
+}
+
+bool is_line(const LineShape& shape, const LineOptions& opts) {
+    return !shape.paths.empty() && shape.length >= opts.min_length && shape.mean_width() <= opts.max_mean_width;
+}
+
+std::vector<CurveStroke> line_curves(const LineShape& shape, Rgba8 color, double widen, uint8_t grid,
+                                     const LineOptions& opts) {
+    std::vector<CurveStroke> out;
+    for (const Centreline& c : shape.paths) {
+        std::vector<cv::Point2d> p;
+        std::vector<double> w;
+        for (size_t i = 0; i < c.pts.size(); ++i) {
+            // Pixel centres, averaged along the branch: a skeleton steps between the two middle
+            // pixels of a line of even width, and its mean runs down the middle (ends keep
+            // their pixel: they pin the branch to its junctions).
+            cv::Point2d m(0, 0);
+            const size_t k0 = i >= 2 ? i - 2 : 0, k1 = std::min(c.pts.size(), i + 3);
+            const bool end = i == 0 || i + 1 == c.pts.size();
+            for (size_t k = k0; k < k1; ++k) m += cv::Point2d(c.pts[k].x, c.pts[k].y);
+            m = end ? cv::Point2d(c.pts[i].x, c.pts[i].y) : m / double(k1 - k0);
+            p.emplace_back(m.x + 0.5, m.y + 0.5);
+            // The distance transform steps by whole and diagonal pixels, and a staircase
+            // skeleton leaves the middle at every step: the median over a few pixels is the
+            // line's width, not its steps.
+            std::vector<double> near;
+            for (size_t k = i >= 3 ? i - 3 : 0; k < std::min(c.pts.size(), i + 4); ++k) near.push_back(c.radius[k]);
+            std::nth_element(near.begin(), near.begin() + long(near.size() / 2), near.end());
+            w.push_back(std::max(0.0, 2 * near[near.size() / 2] - 1 + widen));
+        }
+        std::vector<char> keep(p.size(), 0);
+        keep.front() = keep.back() = 1;
+        simplify(p, w, 0, p.size() - 1, opts.epsilon, opts.width_epsilon, keep);
+        CurveStroke cv;
+        cv.color = color;
+        cv.supersample = grid;
+        for (size_t i = 0; i < p.size(); ++i) {
+            if (!keep[i]) continue;
+            cv.points.push_back({int32_t(std::lround(p[i].x * 16)), int32_t(std::lround(p[i].y * 16)),
+                                 uint32_t(std::lround(w[i] * 16))});
+        }
+        out.push_back(std::move(cv));
+    }
+    return out;
+}
+
+}  // namespace spt::cartoon
