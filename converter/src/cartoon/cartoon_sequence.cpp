@@ -77,7 +77,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             fo.grids = {fill.grid ? fill.grid : uint8_t(4)};
             fo.trace.epsilon = fill.tolerance;
         } else {
-            fill = build_fill_layer(rgb, opts.background, **renderer, fo, &palette);
+            fill = build_fill_layer(rgb, opts.background, **renderer, fo, &palette, &live);
         }
         Frame f;
         if (key) {

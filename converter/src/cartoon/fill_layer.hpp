@@ -42,8 +42,11 @@ struct FillLayer {
 // Traces `rgb` (CV_8UC3 RGB). Regions of the background colour drawn first are left to the
 // canvas. `renderer` renders candidate grids to compare them with the source. With `palette`
 // (a sequence's key frame palette) the colours are not searched again, so that what stays
-// still traces to the same polygons frame after frame.
+// still traces to the same polygons frame after frame. With `previous` (the live list an inter
+// frame follows) a region the previous frame drew as lines stays lines on the key frame's
+// terms (LineOptions::max_error_ratio_inter).
 FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& renderer, const FillOptions& opts,
-                           const std::vector<cv::Vec3b>* palette = nullptr);
+                           const std::vector<cv::Vec3b>* palette = nullptr,
+                           const std::vector<Stroke>* previous = nullptr);
 
 }  // namespace spt::cartoon

@@ -133,6 +133,9 @@ LineShape centrelines(const Regions& regs, int index) {
     const cv::Point origin(box.x - 1, box.y - 1);  // mask pixel -> canvas pixel
     for (std::vector<cv::Point>& b : branches(sk)) {
         Centreline c;
+        cv::Point nb[8];
+        c.free_end[0] = neighbours(sk, b.front(), nb) == 1;
+        c.free_end[1] = neighbours(sk, b.back(), nb) == 1;
         for (cv::Point& p : b) {
             c.radius.push_back(double(dist.at<float>(p.y, p.x)));
             c.pts.push_back(p + origin);
@@ -148,30 +151,138 @@ bool is_line(const LineShape& shape, const LineOptions& opts) {
     return !shape.paths.empty() && shape.length >= opts.min_length && shape.mean_width() <= opts.max_mean_width;
 }
 
-std::vector<CurveStroke> line_curves(const LineShape& shape, Rgba8 color, double widen, uint8_t grid,
-                                     const LineOptions& opts) {
-    std::vector<CurveStroke> out;
-    for (const Centreline& c : shape.paths) {
-        std::vector<cv::Point2d> p;
-        std::vector<double> w;
-        for (size_t i = 0; i < c.pts.size(); ++i) {
+namespace {
+
+// Bilinear sample of an RGB image at pixel coordinates (pixel centres at +0.5), clamped.
+cv::Vec3d sample(const cv::Mat& rgb, cv::Point2d q) {
+    const double x = std::clamp(q.x - 0.5, 0.0, double(rgb.cols - 1)), y = std::clamp(q.y - 0.5, 0.0, double(rgb.rows - 1));
+    const int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, rgb.cols - 1), y1 = std::min(y0 + 1, rgb.rows - 1);
+    const double fx = x - x0, fy = y - y0;
+    cv::Vec3d v;
+    for (int k = 0; k < 3; ++k)
+        v[k] = (1 - fy) * ((1 - fx) * rgb.at<cv::Vec3b>(y0, x0)[k] + fx * rgb.at<cv::Vec3b>(y0, x1)[k]) +
+               fy * ((1 - fx) * rgb.at<cv::Vec3b>(y1, x0)[k] + fx * rgb.at<cv::Vec3b>(y1, x1)[k]);
+    return v;
+}
+
+}  // namespace
+
+constexpr double kEndReach = 1.0;  // pixels
+
+void fit_to_source(LineShape& shape, const cv::Mat& rgb, cv::Vec3b ink, bool measure) {
+    const cv::Vec3d L(ink[0], ink[1], ink[2]);
+    for (Centreline& c : shape.paths) {
+        const size_t n = c.pts.size();
+        c.centre.assign(n, {});
+        c.width.assign(n, 0);
+        std::vector<double> offset(n, 0), measured(n, -1);
+        for (size_t i = 0; i < n; ++i) {
             // Pixel centres, averaged along the branch: a skeleton steps between the two middle
             // pixels of a line of even width, and its mean runs down the middle (ends keep
             // their pixel: they pin the branch to its junctions).
             cv::Point2d m(0, 0);
-            const size_t k0 = i >= 2 ? i - 2 : 0, k1 = std::min(c.pts.size(), i + 3);
-            const bool end = i == 0 || i + 1 == c.pts.size();
+            const size_t k0 = i >= 2 ? i - 2 : 0, k1 = std::min(n, i + 3);
+            const bool end = i == 0 || i + 1 == n;
             for (size_t k = k0; k < k1; ++k) m += cv::Point2d(c.pts[k].x, c.pts[k].y);
             m = end ? cv::Point2d(c.pts[i].x, c.pts[i].y) : m / double(k1 - k0);
-            p.emplace_back(m.x + 0.5, m.y + 0.5);
+            c.centre[i] = m + cv::Point2d(0.5, 0.5);
             // The distance transform steps by whole and diagonal pixels, and a staircase
             // skeleton leaves the middle at every step: the median over a few pixels is the
             // line's width, not its steps.
             std::vector<double> near;
-            for (size_t k = i >= 3 ? i - 3 : 0; k < std::min(c.pts.size(), i + 4); ++k) near.push_back(c.radius[k]);
+            for (size_t k = i >= 3 ? i - 3 : 0; k < std::min(n, i + 4); ++k) near.push_back(c.radius[k]);
             std::nth_element(near.begin(), near.begin() + long(near.size() / 2), near.end());
-            w.push_back(std::max(0.0, 2 * near[near.size() / 2] - 1 + widen));
+            c.width[i] = std::max(0.0, 2 * near[near.size() / 2] - 1);
         }
+        if (n < 3 || !measure) continue;
+        // The source across the line: each sample's coverage is its colour's place between the
+        // colour on its side (the profile's end) and the ink; their sum is the width and their
+        // mean position the centre (exact for an anti-aliased line on a flat ground).
+        for (size_t i = 0; i < n; ++i) {
+            const cv::Point2d d = c.centre[std::min(n - 1, i + 2)] - c.centre[i >= 2 ? i - 2 : 0];
+            const double len = std::hypot(d.x, d.y);
+            if (len < 1e-6) continue;
+            const cv::Point2d nrm(-d.y / len, d.x / len);
+            const double R = std::min(c.width[i] / 2 + 2.5, 6.0);
+            const cv::Vec3d left = sample(rgb, c.centre[i] - R * nrm), right = sample(rgb, c.centre[i] + R * nrm);
+            const cv::Vec3d dl = L - left, dr = L - right;
+            const double nl = dl.dot(dl), nr = dr.dot(dr);
+            if (nl < 400 || nr < 400) continue;  // the ink barely differs from what is around it
+            double sum = 0, moment = 0;
+            constexpr double kStep = 0.25;
+            for (double t = -R + kStep / 2; t < R; t += kStep) {
+                const cv::Vec3d v = sample(rgb, c.centre[i] + t * nrm);
+                const cv::Vec3d& bg = t < 0 ? left : right;
+                const double cov = std::clamp((v - bg).dot(t < 0 ? dl : dr) / (t < 0 ? nl : nr), 0.0, 1.0);
+                sum += cov * kStep;
+                moment += cov * t * kStep;
+            }
+            if (sum <= 0.1) continue;
+            measured[i] = sum;
+            offset[i] = std::clamp(moment / sum, -1.5, 1.5);
+        }
+        // A thinned line's last pixels curl toward a corner of its end, and stop short of it by
+        // about a pixel: a free end's last two points are put back on the line the branch
+        // follows before them, the last one that pixel farther, so that its round cap ends where
+        // the source's does.
+        for (int side = 0; side < 2 && n >= 7; ++side) {
+            if (!c.free_end[side]) continue;
+            auto at = [&](size_t k) -> cv::Point2d& { return c.centre[side ? n - 1 - k : k]; };
+            const cv::Point2d d = at(2) - at(5);
+            const double len = std::hypot(d.x, d.y);
+            if (len < 1e-6) continue;
+            const cv::Point2d u = d / len;
+            const double reach = std::hypot(at(0).x - at(2).x, at(0).y - at(2).y);
+            at(1) = at(2) + u * (reach / 2);
+            at(0) = at(2) + u * (reach + kEndReach);
+        }
+        // Smoothed along the branch (junctions and crossings disturb single profiles).
+        for (size_t i = 0; i < n; ++i) {
+            std::vector<double> ws, os;
+            for (size_t k = i >= 3 ? i - 3 : 0; k < std::min(n, i + 4); ++k)
+                if (measured[k] >= 0) { ws.push_back(measured[k]); os.push_back(offset[k]); }
+            if (ws.size() < 3) continue;
+            std::nth_element(ws.begin(), ws.begin() + long(ws.size() / 2), ws.end());
+            std::nth_element(os.begin(), os.begin() + long(os.size() / 2), os.end());
+            const cv::Point2d d = c.centre[std::min(n - 1, i + 2)] - c.centre[i >= 2 ? i - 2 : 0];
+            const double len = std::hypot(d.x, d.y);
+            c.width[i] = ws[ws.size() / 2];
+            if (len > 1e-6 && i > 0 && i + 1 < n) c.centre[i] += os[os.size() / 2] * cv::Point2d(-d.y / len, d.x / len);
+        }
+    }
+    // Near a junction a profile crosses the branches that meet there: there a branch takes the
+    // width of its own middle (a short spur, the corner of a bend, keeps what it measured: the
+    // filled corner is that wide).
+    constexpr size_t kNear = 3;
+    std::vector<double> all;
+    for (const Centreline& c : shape.paths)
+        for (size_t i = 0; i < c.width.size(); ++i)
+            if ((c.free_end[0] || i >= kNear) && (c.free_end[1] || i + kNear < c.width.size())) all.push_back(c.width[i]);
+    if (all.empty()) return;
+    std::nth_element(all.begin(), all.begin() + long(all.size() / 2), all.end());
+    const double line_width = all[all.size() / 2];
+    for (Centreline& c : shape.paths) {
+        const size_t n = c.width.size();
+        std::vector<double> mid;
+        for (size_t i = 0; i < n; ++i)
+            if ((c.free_end[0] || i >= kNear) && (c.free_end[1] || i + kNear < n)) mid.push_back(c.width[i]);
+        double w = line_width;
+        if (mid.size() >= 3) {
+            std::nth_element(mid.begin(), mid.begin() + long(mid.size() / 2), mid.end());
+            w = mid[mid.size() / 2];
+        }
+        for (size_t i = 0; i < n; ++i)
+            if ((!c.free_end[0] && i < kNear) || (!c.free_end[1] && i + kNear >= n)) c.width[i] = std::min(c.width[i], w);
+    }
+}
+
+std::vector<CurveStroke> line_curves(const LineShape& shape, Rgba8 color, double widen, uint8_t grid,
+                                     const LineOptions& opts) {
+    std::vector<CurveStroke> out;
+    for (const Centreline& c : shape.paths) {
+        std::vector<cv::Point2d> p = c.centre;
+        std::vector<double> w;
+        for (double x : c.width) w.push_back(std::max(0.0, x + widen));
         std::vector<char> keep(p.size(), 0);
         keep.front() = keep.back() = 1;
         simplify(p, w, 0, p.size() - 1, opts.epsilon, opts.width_epsilon, keep);
