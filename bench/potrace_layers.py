@@ -15,13 +15,20 @@ GROUP = re.compile(r'<g transform="([^"]*)"[^>]*>(.*?)</g>', re.S)
 
 
 def svg_palette(svg_text, most=255):
-    """The fill colours of the background <rect> and the <polygon>s of an SVG (spt export of a
-    cartoon frame: its palette), as RGB, at most `most` of them: colours within 6 levels of a
+    """The colours of the background <rect>, the <polygon>s and the lines of an SVG (spt export
+    of a cartoon frame: its palette), as RGB, at most `most` of them: colours within 6 levels of a
     more frequent one join it (a traced ink colour differs a little from region to region)."""
     count, background = {}, True
     for line in svg_text.splitlines():
         # The first <rect> is the canvas; later ones are stamps (the residual, not the palette).
-        if line.startswith("<polygon") or (background and line.startswith("<rect")):
+        # Lines (curves) are a stroked <polyline> or a <g> of discs and quads.
+        if line.startswith("<polyline"):
+            m = re.search(r'stroke="#([0-9a-fA-F]{6})"', line)
+            if m:
+                c = tuple(int(m.group(1)[i:i + 2], 16) for i in (0, 2, 4))
+                count[c] = count.get(c, 0) + 1
+            continue
+        if line.startswith("<polygon") or line.startswith("<g fill") or (background and line.startswith("<rect")):
             background = background and not line.startswith("<rect")
             m = HEX.search(line)
             if m:

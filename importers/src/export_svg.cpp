@@ -77,10 +77,26 @@ void polygon(std::string& o, const PolygonStroke& p, Rgba8 color) {
 }
 
 void curve(std::string& o, const CurveStroke& c, Rgba8 color) {
+    const auto& P = c.points;
+    // A line of one width (a cartoon's drawn lines) is a stroked polyline with round caps and
+    // joins: the same shape (SPEC.md 8.5), and a path that vector editors edit as a line.
+    bool constant = P.size() > 1 && P[0].width > 0;
+    for (const CurvePoint& p : P) constant = constant && p.width == P[0].width;
+    if (constant) {
+        o += "<polyline points=\"";
+        for (size_t i = 0; i < P.size(); ++i) {
+            if (i) o += " ";
+            o += num(P[i].x / 16.0) + "," + num(P[i].y / 16.0);
+        }
+        o += "\" fill=\"none\" stroke=\"" + hex(color) + "\" stroke-width=\"" + num(P[0].width / 16.0) +
+             "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
+        if (color.a != 255) o += " stroke-opacity=\"" + num(color.a / 255.0) + "\"";
+        o += "/>\n";
+        return;
+    }
     o += "<g fill=\"" + hex(color) + "\"";
     if (color.a != 255) o += " opacity=\"" + num(color.a / 255.0) + "\"";
     o += ">";
-    const auto& P = c.points;
     for (size_t i = 0; i < P.size(); ++i) {
         const double x = P[i].x / 16.0, y = P[i].y / 16.0, r = P[i].width / 32.0;
         if (r > 0) o += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"" + num(r) + "\"/>";
