@@ -1,7 +1,9 @@
 // The exact arithmetic of one curve segment (SPEC 8.5), shared by the centre-sampled and the
 // supersampled curve rasterizers.
 #pragma once
+#include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "raster.hpp"
 
@@ -25,6 +27,24 @@ inline int64_t segment_param(int64_t t, int64_t len2) {
 struct Segment {
     int64_t x0, y0, dx, dy, len2, w0, dw;
 };
+
+// Narrows the columns [xa, xb] of the row whose pixel centres have Y (Q4) to those whose
+// centres may lie within `reach` / sqrt(len2) (Q4) of the segment's line, plus a pixel each
+// side: the bound is computed in double with that margin, the per-pixel test stays exact.
+// False when no column of the row can be within reach.
+inline bool reachable_columns(const Segment& s, double reach, int64_t Y, int64_t& xa, int64_t& xb) {
+    if (s.len2 == 0) return true;
+    const double qdx = double(Y - s.y0) * double(s.dx);
+    if (s.dy == 0) return std::fabs(qdx) <= reach + 1;
+    double lo = (qdx - reach) / double(s.dy), hi = (qdx + reach) / double(s.dy);
+    if (lo > hi) std::swap(lo, hi);
+    // qx = 16 x + 8 - x0 in [lo, hi]
+    const double fa = std::floor((lo + double(s.x0) - 8) / 16) - 1;
+    const double fb = std::ceil((hi + double(s.x0) - 8) / 16) + 1;
+    if (fa > double(xa)) xa = fa > double(xb) ? xb + 1 : int64_t(fa);
+    if (fb < double(xb)) xb = fb < double(xa) ? xa - 1 : int64_t(fb);
+    return true;
+}
 
 // How far (Q4, per axis) a pixel's samples lie from its centre: 0 at the centre (grid 0), up
 // to half a pixel on a grid.

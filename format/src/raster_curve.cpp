@@ -82,20 +82,7 @@ void rasterize_curve(const CurveStroke& s, int64_t bx0, int64_t by0, int64_t bx1
             uint8_t* row = out + (y - by0) * bw - bx0;
             const int64_t Y = 16 * y + 8;
             int64_t xa = x0, xb = x1;
-            if (seg.len2 > 0) {
-                const double qdx = double(Y - seg.y0) * double(seg.dx);
-                if (seg.dy == 0) {
-                    if (std::fabs(qdx) > reach + 1) continue;
-                } else {
-                    double lo = (qdx - reach) / double(seg.dy), hi = (qdx + reach) / double(seg.dy);
-                    if (lo > hi) std::swap(lo, hi);
-                    // qx = 16 x + 8 - x0 in [lo, hi]
-                    const double fa = std::floor((lo + double(seg.x0) - 8) / 16) - 1;
-                    const double fb = std::ceil((hi + double(seg.x0) - 8) / 16) + 1;
-                    if (fa > double(xa)) xa = fa > double(xb) ? xb + 1 : int64_t(fa);
-                    if (fb < double(xb)) xb = fb < double(xa) ? xa - 1 : int64_t(fb);
-                }
-            }
+            if (!reachable_columns(seg, reach, Y, xa, xb)) continue;
             for (int64_t x = xa; x <= xb; ++x) {
                 if (row[x] == 0 && covers(seg, 16 * x + 8, Y)) row[x] = 255;
             }

@@ -87,16 +87,8 @@ void rasterize_curve_aa(const CurveStroke& s, int64_t bx0, int64_t by0, int64_t 
             // Columns whose centres may lie within reach of the segment's line (as the centre
             // rasterizer's bound, widened by the samples' half pixel).
             int64_t xa = b.x0, xb = b.x1;
-            if (sg.len2 > 0 && sg.dy != 0) {
-                const double reach = (b.hw_max + kMargin + 12) * std::sqrt(double(sg.len2));
-                const double qdx = (Y - double(sg.y0)) * double(sg.dx);
-                double lo = (qdx - reach) / double(sg.dy), hi = (qdx + reach) / double(sg.dy);
-                if (lo > hi) std::swap(lo, hi);
-                const double fa = std::floor((lo + double(sg.x0) - 8) / 16) - 1;
-                const double fb = std::ceil((hi + double(sg.x0) - 8) / 16) + 1;
-                if (fa > double(xa)) xa = fa > double(xb) ? xb + 1 : int64_t(fa);
-                if (fb < double(xb)) xb = fb < double(xa) ? xa - 1 : int64_t(fb);
-            }
+            const double reach = (b.hw_max + kMargin + 12) * std::sqrt(double(sg.len2));
+            if (!reachable_columns(sg, reach, 16 * y + 8, xa, xb)) continue;
             for (int64_t x = xa; x <= xb; ++x) {
                 if (full[size_t(x - bx0)]) continue;
                 const double d = distance_to(sg, double(16 * x + 8), Y);

@@ -149,89 +149,81 @@ TEST(SvgInBrowser, BitmapStampsAndCurvesMatchRenderer) {
     EXPECT_GE(p, 30.0);
 }
 
-// A flat-colour frame painted by `spt paint --style cartoon` is vector art in SVG: one filled
-// <polygon> per polygon stroke, no masks or embedded images, and a browser draws it close to
-// `spt render`. Needs the real painter, media and Chromium: without them it fails.
-TEST(SvgInBrowser, CartoonFrameIsVectorArt) {
+// A cartoon painting's first frame as SVG: `spt paint SRC ARGS`, its live strokes, the SVG text
+// `spt export` writes, and the PSNR of Chromium's drawing of it against `spt render`.
+struct VectorFrame {
+    std::vector<Stroke> live;
+    std::string svg;
+    double psnr = 0;
+};
+
+void paint_as_svg(const std::string& name, const std::string& src, const std::string& args, VectorFrame& out) {
     ASSERT_TRUE(have_tools()) << "needs " << kChromium << " and the spt tool";
-    const std::string src = std::string(SPT_MEDIA_DIR) + "/cartoon/star/f.0030.png";
     ASSERT_TRUE(fs::exists(src)) << "media missing: " << src;
-    const fs::path d = work_dir("cartoon");
+    const fs::path d = work_dir(name);
     const std::string spt = (d / "c.spt").string(), svg = (d / "out.svg").string(), ref = (d / "ref.png").string();
     const std::string tool = std::string(SPT_TOOL) + " ";
-    const std::string paint = tool + "paint '" + src + "' --style cartoon --alpha off --target-psnr 36 --threads 1 --progress none -o '" + spt + "'";
+    const std::string paint = tool + "paint '" + src + "' " + args + " --style cartoon --threads 1 --progress none -o '" + spt + "'";
     ASSERT_EQ(std::system(paint.c_str()), 0) << paint;
     auto reader = Reader::open(spt);
     ASSERT_TRUE(reader.ok()) << reader.error().message;
     auto live = (*reader)->strokes_at(0);
     ASSERT_TRUE(live.ok()) << live.error().message;
-    size_t polygons = 0;
-    for (const auto& s : **live) polygons += s.kind == StrokeKind::Polygon;
-    ASSERT_GE(polygons, 5u);
-    ASSERT_EQ(polygons, (*live)->size()) << "the star still at 36 dB is polygons only";
+    out.live = **live;
     const std::string exp = tool + "export '" + spt + "' -o '" + svg + "'", ren = tool + "render '" + spt + "' -o '" + ref + "'";
     ASSERT_EQ(std::system(exp.c_str()), 0) << exp;
     ASSERT_EQ(std::system(ren.c_str()), 0) << ren;
     std::stringstream text;
     text << std::ifstream(svg).rdbuf();
-    const std::string t = text.str();
+    out.svg = text.str();
+    const auto& h = (*reader)->info().header;
+    auto crop = chromium_shot(d, h.width, h.height);
+    auto r = io::read_image(ref);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_FALSE(crop.empty());
+    out.psnr = import::psnr_rgb8(crop.data(), r->rgb.data(), size_t(h.width) * h.height);
+    std::error_code ec;
+    fs::remove_all(d, ec);
+}
+
+size_t count_kind(const std::vector<Stroke>& v, StrokeKind k) {
+    return size_t(std::count_if(v.begin(), v.end(), [k](const Stroke& s) { return s.kind == k; }));
+}
+
+// A flat-colour frame painted by `spt paint --style cartoon` is vector art in SVG: one filled
+// <polygon> per polygon stroke, no masks or embedded images, and a browser draws it close to
+// `spt render`. Needs the real painter, media and Chromium: without them it fails.
+TEST(SvgInBrowser, CartoonFrameIsVectorArt) {
+    VectorFrame f;
+    ASSERT_NO_FATAL_FAILURE(paint_as_svg("cartoon", std::string(SPT_MEDIA_DIR) + "/cartoon/star/f.0030.png",
+                                         "--alpha off --target-psnr 36", f));
+    const size_t polygons = count_kind(f.live, StrokeKind::Polygon);
+    ASSERT_GE(polygons, 5u);
+    ASSERT_EQ(polygons, f.live.size()) << "the star still at 36 dB is polygons only";
+    const std::string& t = f.svg;
     EXPECT_EQ(count(t, "<mask"), 0u);
     EXPECT_EQ(count(t, "<image"), 0u);
     EXPECT_EQ(count(t, "<polygon ") + count(t, "<path "), polygons);
     EXPECT_EQ(count(t, "fill-rule=\"nonzero\" fill=\"#"), polygons) << "every polygon filled with its colour";
     EXPECT_EQ(count(t, "<"), polygons + 4) << "nothing but <?xml>, <svg>, the background <rect>, the polygons, </svg>";
-    const auto& h = (*reader)->info().header;
-    auto crop = chromium_shot(d, h.width, h.height);
-    auto r = io::read_image(ref);
-    ASSERT_TRUE(r.ok()) << r.error().message;
-    ASSERT_FALSE(crop.empty());
-    const double p = import::psnr_rgb8(crop.data(), r->rgb.data(), size_t(h.width) * h.height);
-    std::printf("chromium vs spt render, cartoon star (%zu polygons): PSNR %.2f dB\n", polygons, p);
-    EXPECT_GE(p, 40.0);  // measured 46.2: browsers anti-alias analytically, spt on a 4x4/8x8 grid
-    std::error_code ec;
-    fs::remove_all(d, ec);
+    std::printf("chromium vs spt render, cartoon star (%zu polygons): PSNR %.2f dB\n", polygons, f.psnr);
+    EXPECT_GE(f.psnr, 40.0);  // measured 46.2: browsers anti-alias analytically, spt on a 4x4/8x8 grid
 }
 
 // The butterfly's lines (format 1.4 anti-aliased curves) in SVG: stroked polylines with round
 // caps and joins where a line has one width, a browser draws them close to `spt render`.
 TEST(SvgInBrowser, CartoonLinesAreStrokedPaths) {
-    ASSERT_TRUE(have_tools()) << "needs " << kChromium << " and the spt tool";
-    const std::string src = std::string(SPT_MEDIA_DIR) + "/video/butterfly-cartoon.avi";
-    ASSERT_TRUE(fs::exists(src)) << "media missing: " << src;
-    const fs::path d = work_dir("lines");
-    const std::string spt = (d / "b.spt").string(), svg = (d / "out.svg").string(), ref = (d / "ref.png").string();
-    const std::string tool = std::string(SPT_TOOL) + " ";
+    VectorFrame f;
     // A target the polygons and lines reach alone: no stamps, the frame is vector art.
-    const std::string paint = tool + "paint '" + src + "' --frames 40 --style cartoon --target-psnr 28 --threads 1 --progress none -o '" + spt + "'";
-    ASSERT_EQ(std::system(paint.c_str()), 0) << paint;
-    auto reader = Reader::open(spt);
-    ASSERT_TRUE(reader.ok()) << reader.error().message;
-    auto live = (*reader)->strokes_at(0);
-    ASSERT_TRUE(live.ok()) << live.error().message;
-    size_t curves = 0, stamps = 0;
-    for (const auto& s : **live) {
-        curves += s.kind == StrokeKind::Curve;
-        stamps += s.kind == StrokeKind::Stamp;
-    }
+    ASSERT_NO_FATAL_FAILURE(paint_as_svg("lines", std::string(SPT_MEDIA_DIR) + "/video/butterfly-cartoon.avi",
+                                         "--frames 40 --target-psnr 28", f));
+    const size_t curves = count_kind(f.live, StrokeKind::Curve);
     ASSERT_GE(curves, 20u);
-    ASSERT_EQ(stamps, 0u);
-    const std::string exp = tool + "export '" + spt + "' -o '" + svg + "'", ren = tool + "render '" + spt + "' -o '" + ref + "'";
-    ASSERT_EQ(std::system(exp.c_str()), 0) << exp;
-    ASSERT_EQ(std::system(ren.c_str()), 0) << ren;
-    std::stringstream text;
-    text << std::ifstream(svg).rdbuf();
-    const std::string t = text.str();
+    ASSERT_EQ(count_kind(f.live, StrokeKind::Stamp), 0u);
+    const std::string& t = f.svg;
     EXPECT_EQ(count(t, "url(#"), 0u) << "no stroke drawn through a template's mask (a video's file keeps its templates)";
     EXPECT_GE(count(t, "<polyline "), curves / 2) << "most lines have one width";
     EXPECT_EQ(count(t, "stroke-linecap=\"round\" stroke-linejoin=\"round\""), count(t, "<polyline "));
-    const auto& h = (*reader)->info().header;
-    auto crop = chromium_shot(d, h.width, h.height);
-    auto r = io::read_image(ref);
-    ASSERT_TRUE(r.ok()) << r.error().message;
-    ASSERT_FALSE(crop.empty());
-    const double p = import::psnr_rgb8(crop.data(), r->rgb.data(), size_t(h.width) * h.height);
-    std::printf("chromium vs spt render, butterfly frame 40 (%zu lines): PSNR %.2f dB\n", curves, p);
-    EXPECT_GE(p, 40.0);  // measured 45.6
-    std::error_code ec;
-    fs::remove_all(d, ec);
+    std::printf("chromium vs spt render, butterfly frame 40 (%zu lines): PSNR %.2f dB\n", curves, f.psnr);
+    EXPECT_GE(f.psnr, 40.0);  // measured 45.6
 }
