@@ -37,9 +37,9 @@ function ppm(file) {
 }
 
 // Frame n from the page's canvas (RGBA) against spt render's (RGB): every byte, alpha 255.
-async function checkFrames(page, clip) {
-  for (const n of FRAMES) run('render', clip, '-o', w(`ref.${n}.ppm`), '--frames', String(n));
-  for (const n of FRAMES) {
+async function checkFrames(page, clip, frames = FRAMES, tag = 'ref') {
+  for (const n of frames) run('render', clip, '-o', w(`${tag}.${n}.ppm`), '--frames', String(n));
+  for (const n of frames) {
     const b64 = await page.evaluate(async (n) => {
       const el = document.querySelector('spt-player');
       el.pause();
@@ -51,7 +51,7 @@ async function checkFrames(page, clip) {
       return btoa(s);
     }, n);
     const got = Buffer.from(b64, 'base64');
-    const want = ppm(w(`ref.${n}.ppm`));
+    const want = ppm(w(`${tag}.${n}.ppm`));
     assert.equal(got.length / 4, want.length / 3, `frame ${n}: canvas size`);
     let bad = 0, first = -1;
     for (let i = 0, j = 0; j < want.length; i += 4, j += 3) {
@@ -146,6 +146,22 @@ try {
     assert.equal(await page.evaluate(() => document.querySelector('spt-player').playing), false, 'space pauses');
     console.log(`ok: ${clip} keys (arrows, Shift+arrows, Home, End, space)`);
     assert.deepEqual(errors, [], `${clip}: errors on the page`);
+    await page.close();
+  }
+
+  // A cartoon with lines (format 1.4: anti-aliased curves) draws as spt render draws it.
+  const butterfly = path.join(media, 'video', 'butterfly-cartoon.avi');
+  if (!fs.existsSync(butterfly)) throw new Error(`media missing: ${butterfly}`);
+  run('paint', butterfly, '-o', w('toon.spt'), '--frames', '40-41', '--style', 'cartoon', '--target-psnr', '30',
+      '--seed', '1', '--progress', 'none');
+  const kinds = JSON.parse(run('info', w('toon.spt'), '--json')).strokes.kinds;
+  assert.ok(kinds.curve > 20, `toon.spt holds lines: ${JSON.stringify(kinds)}`);
+  run('export', w('toon.spt'), '-o', w('toon.html'));
+  {
+    const { page, errors } = await openPlayer(context, w('toon.html'));
+    await page.evaluate(async () => { await document.querySelector('spt-player').ready; });
+    await checkFrames(page, w('toon.spt'), [0, 1, 0], 'toon');
+    assert.deepEqual(errors, [], 'toon.html: errors on the page');
     await page.close();
   }
 
