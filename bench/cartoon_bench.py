@@ -17,8 +17,8 @@ sequence also painted from the .avi itself, --frames 0-(FRAMES-1)); for x265
 (-preset slow) and AV1 (libaom, -cpu-used 4), yuv420p and yuv444p, the CRF whose PSNR is
 closest to the cartoon's from above, and (yuv420p) the CRF whose stream is closest to the
 cartoon's bytes from below, both searched by bisection; for potrace per colour layer
-(bench/potrace_layers.py: the frame quantized to the palette of the cartoon's polygons in that
-frame, stacked and not), the SVG bytes, plain and gzip'd, and its PSNR once rasterized by
+(bench/potrace_layers.py: the frame quantized to the palette of the cartoon's polygons and lines
+in that frame, stacked and not), the SVG bytes, plain and gzip'd, and its PSNR once rasterized by
 librsvg (ffmpeg's svg decoder). x265 bytes are the raw HEVC stream, AV1 the raw OBU stream (no
 container), spt the whole .spt file (header, templates and metadata included), potrace the sum
 of one SVG per frame. Each clip's still also gives a contact sheet OUT/CLIP-contact.png:
@@ -160,7 +160,7 @@ def codec_at(spt, codec, src_pattern, ref, still, base, pix, threads, psnr=None,
 
 def potrace_rows(spt, cartoon_spt, src, ref, base, n):
     """potrace per colour layer (bench/potrace_layers.py) on the source frames, with the palette
-    of the cartoon's polygons in the same frame; rasterized by librsvg (ffmpeg's svg decoder).
+    of the cartoon's polygons and lines in the same frame; rasterized by librsvg (ffmpeg's svg decoder).
     Returns rows (label, SVG bytes, PSNR, SSIM) stacked and not, bytes gzip'd too."""
     shutil.rmtree(base + "-svg", ignore_errors=True)
     os.makedirs(base + "-svg")
