@@ -12,7 +12,7 @@ core_pkgs=(build-essential cmake ninja-build pkg-config git python3
            libopenimageio-dev openimageio-tools libopencv-dev libopenexr-dev
            libcli11-dev nlohmann-json3-dev libpugixml-dev libpng-dev zlib1g-dev)
 test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy ccache
-           blender libegl1 libegl-mesa0 ffmpeg chromium xz-utils
+           blender libegl1 libegl-mesa0 ffmpeg chromium inkscape xz-utils
            mmdebstrap time              # Blender 4.3 and 5.2 roots (tests/blender/blender_root.sh)
            emscripten node-acorn nodejs   # the web player (web/) and its Chromium test
            slurm-wlm munge iproute2     # the farm test's own Slurm cluster (tests/farm)

@@ -19,6 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* kChromium = "/usr/bin/chromium";
+const char* kInkscape = "/usr/bin/inkscape";
 
 fs::path work_dir(const std::string& name) {
     fs::path d = fs::temp_directory_path() / ("spt_browser_" + std::to_string(::getpid()) + "_" + name);
@@ -52,6 +53,22 @@ std::vector<uint8_t> chromium_shot(const fs::path& d, uint32_t w, uint32_t h) {
         crop.insert(crop.end(), row, row + size_t(w) * 3);
     }
     return crop;
+}
+
+// d/out.svg drawn by Inkscape (its own renderer, cairo) on white, as RGB; empty on failure.
+std::vector<uint8_t> inkscape_render(const fs::path& d, uint32_t w, uint32_t h) {
+    const std::string png = (d / "inkscape.png").string();
+    const std::string cmd = std::string(kInkscape) + " --export-type=png --export-filename='" + png +
+                            "' --export-background=white --export-background-opacity=1 '" + (d / "out.svg").string() +
+                            "' >/dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    auto img = io::read_image(png);
+    EXPECT_TRUE(img.ok()) << (img.ok() ? "" : img.error().message);
+    if (!img.ok() || img->width != w || img->height != h) {
+        ADD_FAILURE() << "Inkscape drew " << (img.ok() ? img->width : 0) << "x" << (img.ok() ? img->height : 0);
+        return {};
+    }
+    return img->rgb;
 }
 
 // Exports `doc` through the spt tool, screenshots it in Chromium, returns the PSNR against
@@ -150,15 +167,17 @@ TEST(SvgInBrowser, BitmapStampsAndCurvesMatchRenderer) {
 }
 
 // A cartoon painting's first frame as SVG: `spt paint SRC ARGS`, its live strokes, the SVG text
-// `spt export` writes, and the PSNR of Chromium's drawing of it against `spt render`.
+// `spt export` writes, and the PSNR of Chromium's and of Inkscape's drawing of it against
+// `spt render`.
 struct VectorFrame {
     std::vector<Stroke> live;
     std::string svg;
-    double psnr = 0;
+    double psnr = 0, inkscape_psnr = 0;
 };
 
 void paint_as_svg(const std::string& name, const std::string& src, const std::string& args, VectorFrame& out) {
     ASSERT_TRUE(have_tools()) << "needs " << kChromium << " and the spt tool";
+    ASSERT_TRUE(fs::exists(kInkscape)) << "needs " << kInkscape << " (Debian package inkscape; ./setup.sh test installs it)";
     ASSERT_TRUE(fs::exists(src)) << "media missing: " << src;
     const fs::path d = work_dir(name);
     const std::string spt = (d / "c.spt").string(), svg = (d / "out.svg").string(), ref = (d / "ref.png").string();
@@ -182,6 +201,9 @@ void paint_as_svg(const std::string& name, const std::string& src, const std::st
     ASSERT_TRUE(r.ok()) << r.error().message;
     ASSERT_FALSE(crop.empty());
     out.psnr = import::psnr_rgb8(crop.data(), r->rgb.data(), size_t(h.width) * h.height);
+    const auto ink = inkscape_render(d, h.width, h.height);
+    ASSERT_FALSE(ink.empty());
+    out.inkscape_psnr = import::psnr_rgb8(ink.data(), r->rgb.data(), size_t(h.width) * h.height);
     std::error_code ec;
     fs::remove_all(d, ec);
 }
@@ -191,8 +213,9 @@ size_t count_kind(const std::vector<Stroke>& v, StrokeKind k) {
 }
 
 // A flat-colour frame painted by `spt paint --style cartoon` is vector art in SVG: one filled
-// <polygon> per polygon stroke, no masks or embedded images, and a browser draws it close to
-// `spt render`. Needs the real painter, media and Chromium: without them it fails.
+// <polygon> per polygon stroke, no masks or embedded images, and a browser and Inkscape draw it
+// close to `spt render`. Needs the real painter, media, Chromium and Inkscape: without them it
+// fails.
 TEST(SvgInBrowser, CartoonFrameIsVectorArt) {
     VectorFrame f;
     ASSERT_NO_FATAL_FAILURE(paint_as_svg("cartoon", std::string(SPT_MEDIA_DIR) + "/cartoon/star/f.0030.png",
@@ -206,8 +229,10 @@ TEST(SvgInBrowser, CartoonFrameIsVectorArt) {
     EXPECT_EQ(count(t, "<polygon ") + count(t, "<path "), polygons);
     EXPECT_EQ(count(t, "fill-rule=\"nonzero\" fill=\"#"), polygons) << "every polygon filled with its colour";
     EXPECT_EQ(count(t, "<"), polygons + 4) << "nothing but <?xml>, <svg>, the background <rect>, the polygons, </svg>";
-    std::printf("chromium vs spt render, cartoon star (%zu polygons): PSNR %.2f dB\n", polygons, f.psnr);
+    std::printf("chromium vs spt render, cartoon star (%zu polygons): PSNR %.2f dB; Inkscape %.2f dB\n", polygons, f.psnr,
+                f.inkscape_psnr);
     EXPECT_GE(f.psnr, 40.0);  // measured 46.2: browsers anti-alias analytically, spt on a 4x4/8x8 grid
+    EXPECT_GE(f.inkscape_psnr, 40.0);  // measured 51.5
 }
 
 // The butterfly's lines (format 1.4 anti-aliased curves) in SVG: stroked polylines with round
@@ -224,6 +249,8 @@ TEST(SvgInBrowser, CartoonLinesAreStrokedPaths) {
     EXPECT_EQ(count(t, "url(#"), 0u) << "no stroke drawn through a template's mask (a video's file keeps its templates)";
     EXPECT_GE(count(t, "<polyline "), curves / 2) << "most lines have one width";
     EXPECT_EQ(count(t, "stroke-linecap=\"round\" stroke-linejoin=\"round\""), count(t, "<polyline "));
-    std::printf("chromium vs spt render, butterfly frame 40 (%zu lines): PSNR %.2f dB\n", curves, f.psnr);
+    std::printf("chromium vs spt render, butterfly frame 40 (%zu lines): PSNR %.2f dB; Inkscape %.2f dB\n", curves, f.psnr,
+                f.inkscape_psnr);
     EXPECT_GE(f.psnr, 40.0);  // measured 45.6
+    EXPECT_GE(f.inkscape_psnr, 40.0);  // measured 54.0
 }
