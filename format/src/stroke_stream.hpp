@@ -308,6 +308,21 @@ SPT_CODER_INLINE bool code_polygon_outline(C& c, PolygonModels& pm, const Polygo
     return true;
 }
 
+// A polygon's or a curve's supersampling grid (SPEC.md 7.4): the same as `prev` (one flag), or a
+// 5-bit tree that MUST differ from it and be 0 or 2..16; `prev` becomes the grid.
+template <class C>
+SPT_CODER_INLINE bool code_grid(C& c, uint16_t& same, uint16_t* tree, uint32_t& prev, uint8_t& grid, const char* kind,
+                                SyntaxError& err) {
+    uint32_t g = prev;
+    if (c.bit(same, grid != prev ? 1 : 0)) {
+        g = code_tree(c, tree, 5, grid);
+        if (g == prev || g == 1 || g > 16) { err.set(std::string(kind) + " supersampling " + std::to_string(g) + " is invalid"); return false; }
+    }
+    grid = uint8_t(g);
+    prev = g;
+    return true;
+}
+
 // Polygon stroke geometry (SPEC.md 7.4, polygon 5): vertex count, supersampling, first vertex,
 // then the outline.
 template <class C>
@@ -317,13 +332,7 @@ SPT_CODER_INLINE bool code_polygon(C& c, StrokeCoderState& st, PolygonStroke& pg
     c.set_field(Field::Geometry);
     const uint64_t n = code_uint(c, pm.points, pg.points.size() >= 3 ? pg.points.size() - 3 : 0) + 3;
     if (n > lim.max_polygon_vertices) { err.set("polygon of " + std::to_string(n) + " vertices exceeds the limit"); return false; }
-    uint32_t aa = pm.prev_aa;
-    if (c.bit(pm.same_aa, pg.supersample != pm.prev_aa ? 1 : 0)) {
-        aa = code_tree(c, pm.aa, 5, pg.supersample);
-        if (aa == pm.prev_aa || aa == 1 || aa > 16) { err.set("polygon supersampling " + std::to_string(aa) + " is invalid"); return false; }
-    }
-    pg.supersample = uint8_t(aa);
-    pm.prev_aa = aa;
+    if (!code_grid(c, pm.same_aa, pm.aa, pm.prev_aa, pg.supersample, "polygon", err)) return false;
     pg.points.resize(size_t(n));  // the encoder's size already; the decoder's new
     auto& p0 = pg.points[0];
     c.set_field(Field::Position);
@@ -408,13 +417,7 @@ SPT_CODER_INLINE bool code_stroke(C& c, StrokeCoderState& st, Stroke& s, const L
     const uint64_t n = code_uint(c, st.points, cv.points.empty() ? 0 : cv.points.size() - 1) + 1;
     if (n > lim.max_curve_points) { err.set("curve of " + std::to_string(n) + " points exceeds the limit"); return false; }
     if (sh.curve_grid) {  // format 1.4 (SPEC.md 7.4 step 4)
-        uint32_t aa = st.prev_curve_aa;
-        if (c.bit(st.curve_same_aa, cv.supersample != st.prev_curve_aa ? 1 : 0)) {
-            aa = code_tree(c, st.curve_aa, 5, cv.supersample);
-            if (aa == st.prev_curve_aa || aa == 1 || aa > 16) { err.set("curve supersampling " + std::to_string(aa) + " is invalid"); return false; }
-        }
-        cv.supersample = uint8_t(aa);
-        st.prev_curve_aa = aa;
+        if (!code_grid(c, st.curve_same_aa, st.curve_aa, st.prev_curve_aa, cv.supersample, "curve", err)) return false;
     } else {
         cv.supersample = 0;
     }

@@ -7,6 +7,17 @@ from .strokes import check_coord
 ONE = 1 << 30  # 1.0 in the conic mode's Q30 unit vectors
 
 
+def decode_grid(rc, same, tree, prev, bad):
+    """A polygon's or a curve's grid (SPEC.md 7.4): `prev` when flag(same) is 0, else tree(5),
+    which must differ from `prev` and be 0 or 2..16 (`bad(grid)` otherwise)."""
+    if not rc.flag(same):
+        return prev
+    grid = rc.tree(tree)
+    if grid == prev or grid == 1 or grid > 16:
+        bad(grid)
+    return grid
+
+
 class PolygonContexts:
     def __init__(self):
         self.points = UInt()
@@ -32,12 +43,7 @@ def decode_polygon(ss):
     n = 3 + rc.uint(pc.points)
     if n > 1 << 16:
         fail("LimitExceeded", f"{ss.what}: polygon of {n} vertices")
-    grid = pc.prev_aa
-    if rc.flag(pc.same_aa):
-        grid = rc.tree(pc.aa)
-        if grid == pc.prev_aa or grid == 1 or grid > 16:
-            ss.fail(f"polygon grid {grid}")
-    pc.prev_aa = grid
+    grid = pc.prev_aa = decode_grid(rc, pc.same_aa, pc.aa, pc.prev_aa, lambda g: ss.fail(f"polygon grid {g}"))
     x0, y0 = ss.position(3, 0), ss.position(3, 1)
     s = rc.tree(pc.shift)
     if s > 4:

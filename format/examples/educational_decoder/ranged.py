@@ -2,7 +2,7 @@
 from .errors import ByteReader, fail
 from .range_coder import Context, RangeDecoder, Res8, SInt, Tree, UInt, bits, contexts
 from .strokes import AFFINE, CURVE, MATRIX_MAX, POLYGON, STAMP, Affine, Curve, Motion, Polygon, Stamp, check_coord
-from .polygon import decode_polygon
+from .polygon import decode_grid, decode_polygon
 
 
 class BodyPrefix:
@@ -269,12 +269,8 @@ class StrokeStream:
             fail("LimitExceeded", f"{self.what}: curve of {n} points")
         grid = 0
         if self.header.curve_grid:  # format 1.4: coded only in a file with the HEAD flag
-            grid = self.prev_curve_aa
-            if rc.flag(self.curve_same_aa):
-                grid = rc.tree(self.curve_aa)
-                if grid == self.prev_curve_aa or grid == 1 or grid > 16:
-                    self.fail(f"curve grid {grid}")
-            self.prev_curve_aa = grid
+            grid = self.prev_curve_aa = decode_grid(rc, self.curve_same_aa, self.curve_aa, self.prev_curve_aa,
+                                                    lambda g: self.fail(f"curve grid {g}"))
         x, y = self.position(2, 0), self.position(2, 1)
         w = self.prev_width0 + rc.sint(self.width0)
         if not 0 <= w <= 1 << 16:
