@@ -97,6 +97,8 @@ def temp_path(suffix=".spt") -> str:
 def paint_args(opts: dict) -> list:
     """Command-line options of `spt paint` from the panel's settings (skipping defaults)."""
     a = []
+    if opts.get("style", "painterly") != "painterly":
+        a += ["--style", opts["style"]]
     if opts.get("sets"):
         a += ["--sets", str(opts["sets"])]
     if opts.get("max_strokes"):

@@ -187,4 +187,17 @@ out = os.path.join(work, "still.spt")
 obj = paint("still", out, source='FILE', filepath=os.path.join(work, "clip", "c.0002.png"))
 check_import("still", obj, out, 1)
 check_export_renders_identically("still", obj, out)
+
+# 4. Style Cartoon: the same frames as flat-colour art (spt paint --style cartoon), imported one
+#    layer per kind: "fills" holds the polygons, and the unedited export renders identically.
+out = os.path.join(work, "cartoon.spt")
+obj = paint("cartoon", out, source='FILE', filepath=os.path.join(work, "clip", "c.####.png"), style='CARTOON',
+            target_psnr=30.0)
+info = json.loads(subprocess.run([spt, "info", out, "--json"], capture_output=True, text=True, check=True).stdout)
+C.check("style=cartoon" in info["metadata"].get("painter.options", ""), f"cartoon: spt painted with --style cartoon: {info['metadata']}")
+C.check(info["strokes"]["kinds"]["polygon"] > 0, f"cartoon: the painting holds polygons: {info['strokes']['kinds']}")
+C.check("fills" in G.layer_names(obj), f"cartoon: a fills layer: {G.layer_names(obj)}")
+check_export_renders_identically("cartoon", obj, out)
+scene.spt_paint.style = 'PAINTERLY'
+scene.spt_paint.target_psnr = 0.0
 print("OK")

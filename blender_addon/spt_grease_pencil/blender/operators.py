@@ -141,7 +141,7 @@ class SPT_OT_paint(bpy.types.Operator):
         opts = {"sets": st.sets, "max_strokes": st.max_strokes, "target_psnr": st.target_psnr,
                 "templates": bpy.path.abspath(st.templates) if st.templates else "",
                 "key_interval": st.key_interval, "roi": bpy.path.abspath(st.roi) if st.roi else "",
-                "seed": st.seed, "frames": frames}
+                "seed": st.seed, "frames": frames, "style": st.style.lower()}
         if st.source == 'RENDER' or "#" in source or "%" in source:
             opts["fps"] = scene_fps_text(scene)  # image sequences carry no rate; a video keeps its own
         spt_tool.version(spt_path(context))  # a clear message when missing or too old

@@ -13,6 +13,11 @@ class SPT_PaintSettings(bpy.types.PropertyGroup):
     ], default='RENDER')
     filepath: StringProperty(name="File", subtype='FILE_PATH',
                              description="Image, sequence pattern (####) or video to paint")
+    style: EnumProperty(name="Style", items=[
+        ('PAINTERLY', "Painterly", "Brush strokes over the picture (spt's default painter)"),
+        ('CARTOON', "Cartoon", "Flat-colour art (toon renders, cartoons): filled shapes and drawn lines, "
+                               "brush strokes only where they leave an error (spt paint --style cartoon)"),
+    ], default='PAINTERLY')
     output: StringProperty(name="Output .spt", subtype='FILE_PATH', default="//painted.spt",
                            description="Where spt writes the painting (empty: a temporary file)")
     sets: IntProperty(name="Stroke sets", default=0, min=0, max=10,
@@ -52,6 +57,7 @@ class SPT_PT_paint(bpy.types.Panel):
         if st.source == 'FILE':
             col.prop(st, "filepath")
         col.prop(st, "output")
+        col.prop(st, "style")
         col.prop(st, "sets")
         col.prop(st, "max_strokes")
         col.prop(st, "target_psnr")
