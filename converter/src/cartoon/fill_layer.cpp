@@ -74,8 +74,8 @@ double strokes_bytes(const std::vector<Stroke>& v) {
     return b;
 }
 
-// Region `index` as lines, when it is thin and its curves (at the best of a few widths) are no
-// farther from the source than `polys` and cost fewer bytes. Empty otherwise.
+// Region `index` as lines, when it is thin and its best curves (two middles, seven widths each)
+// are within opts.max_error_ratio of `polys`' error and cost fewer bytes. Empty otherwise.
 std::vector<Stroke> lines_instead(const cv::Mat& rgb, const Regions& regs, int index, const std::vector<Stroke>& polys,
                                   const Renderer& renderer, const Canvas& below, const LineOptions& opts) {
     LineShape shape = centrelines(regs, index);
