@@ -28,9 +28,10 @@ int neighbours(const cv::Mat& sk, cv::Point p, cv::Point out[8]) {
     return n;
 }
 
-uint64_t edge_key(cv::Point a, cv::Point b) {
-    auto k = [](cv::Point p) { return (uint64_t(uint32_t(p.y)) << 16) | uint32_t(p.x); };
-    const uint64_t ka = k(a), kb = k(b);
+// An edge between two skeleton pixels of a mask `cols` wide, as one number: the pixels' indices
+// (below 2^32: a mask is a region's box, and no image this painter holds has 2^32 pixels).
+uint64_t edge_key(cv::Point a, cv::Point b, int cols) {
+    const uint64_t ka = uint64_t(a.y) * uint64_t(cols) + uint64_t(a.x), kb = uint64_t(b.y) * uint64_t(cols) + uint64_t(b.x);
     return ka < kb ? (ka << 32) | kb : (kb << 32) | ka;
 }
 
@@ -64,7 +65,7 @@ std::vector<std::vector<cv::Point>> branches(const cv::Mat& sk) {
     std::unordered_set<uint64_t> used;  // skeleton edges walked
     auto walk = [&](cv::Point start, cv::Point first) {
         std::vector<cv::Point> path{start};
-        used.insert(edge_key(start, first));
+        used.insert(edge_key(start, first, sk.cols));
         cv::Point prev = start, cur = first;
         for (;;) {
             path.push_back(cur);
@@ -72,8 +73,8 @@ std::vector<std::vector<cv::Point>> branches(const cv::Mat& sk) {
             const int n = neighbours(sk, cur, nb);
             if (n != 2) break;  // an end or a junction
             const cv::Point next = nb[0] == prev ? nb[1] : nb[0];
-            if (used.count(edge_key(cur, next))) break;  // a loop closed
-            used.insert(edge_key(cur, next));
+            if (used.count(edge_key(cur, next, sk.cols))) break;  // a loop closed
+            used.insert(edge_key(cur, next, sk.cols));
             prev = cur;
             cur = next;
         }
@@ -91,7 +92,7 @@ std::vector<std::vector<cv::Point>> branches(const cv::Mat& sk) {
             }
             if (pass == 0 && n == 2) continue;
             for (int k = 0; k < n; ++k)
-                if (!used.count(edge_key(p, nb[k]))) walk(p, nb[k]);
+                if (!used.count(edge_key(p, nb[k], sk.cols))) walk(p, nb[k]);
         }
     return out;
 }
