@@ -160,6 +160,25 @@ TEST(CartoonCli, RejectsAnUnknownStyle) {
     EXPECT_FALSE(fs::exists(dir.file("x.spt")));
 }
 
+// The cartoon painter's own options without --style cartoon are a usage error naming them, not
+// silently ignored.
+TEST(CartoonCli, CartoonOptionsNeedTheCartoonStyle) {
+    TempDir dir;
+    const cv::Mat img = flat_art();
+    ASSERT_TRUE(spt::io::write_image(dir.file("art.png"), uint32_t(img.cols), uint32_t(img.rows), img.data));
+    for (std::vector<std::string> extra : {std::vector<std::string>{"--no-lines"}, {"--outline-tolerance", "0.5"}}) {
+        fs::remove(dir.file("x.spt"));
+        std::vector<std::string> args = {"paint", dir.file("art.png"), "-o", dir.file("x.spt"), "--progress", "none"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const auto r = run_spt(dir, args);
+        EXPECT_EQ(r.code, 2) << extra[0];
+        EXPECT_NE(r.err.find(extra[0] + " applies to --style cartoon only"), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir.file("x.spt")));
+        args.insert(args.end(), {"--style", "cartoon"});
+        EXPECT_EQ(run_spt(dir, args).code, 0) << extra[0] << " with --style cartoon";
+    }
+}
+
 TEST(CartoonCli, StarFrameReaches36dBInFewBytes) {
     const fs::path src = fs::path(SPT_MEDIA_DIR) / "cartoon/star/f.0030.png";
     ASSERT_TRUE(fs::exists(src)) << src << " is missing: the shared media are needed for this test";

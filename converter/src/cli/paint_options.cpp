@@ -284,6 +284,9 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
     if (a.has("outline-tolerance") && !parse_double(v("outline-tolerance"), 0.01, 100, o.outline_tolerance))
         return bad("--outline-tolerance: expected 0.01..100 pixels, got '" + v("outline-tolerance") + "'");
     o.lines = !a.has("no-lines");
+    // The cartoon painter's options do nothing for the default painter: said, not ignored.
+    for (const char* f : {"outline-tolerance", "no-lines"})
+        if (a.has(f) && o.style != "cartoon") return bad(std::string("--") + f + " applies to --style cartoon only");
     long n = 0;
     if (a.has("seed") && !parse_u64(v("seed"), o.paint.seed))
         return bad("--seed: expected an unsigned integer, got '" + v("seed") + "'");
