@@ -81,6 +81,7 @@ double strokes_bytes(const std::vector<Stroke>& v) {
 // are within opts.max_error_ratio of `polys`' error and cost fewer bytes. Empty otherwise.
 std::vector<Stroke> lines_instead(const cv::Mat& rgb, const Regions& regs, int index, const std::vector<Stroke>& polys,
                                   const Renderer& renderer, const Canvas& below, const LineOptions& opts) {
+    if (!may_be_line(regs, index, opts)) return {};
     LineShape shape = centrelines(regs, index);
     if (!is_line(shape, opts)) return {};
     // Lines must cost fewer bytes: a branch is at least one point (two when it has two), so

@@ -148,6 +148,21 @@ LineShape centrelines(const Regions& regs, int index) {
     return out;
 }
 
+bool may_be_line(const Regions& regs, int index, const LineOptions& opts) {
+    const Region& reg = regs.list[size_t(index)];
+    const cv::Rect img(0, 0, regs.id.cols, regs.id.rows);
+    const cv::Rect box = reg.box & img;
+    int64_t pixels = 0, edge = 0;
+    auto inside = [&](int x, int y) { return x >= 0 && y >= 0 && x < img.width && y < img.height && regs.id.at<int>(y, x) == index; };
+    for (int y = box.y; y < box.br().y; ++y)
+        for (int x = box.x; x < box.br().x; ++x) {
+            if (regs.id.at<int>(y, x) != index) continue;
+            ++pixels;
+            edge += !inside(x - 1, y) || !inside(x + 1, y) || !inside(x, y - 1) || !inside(x, y + 1);
+        }
+    return double(pixels) <= 2.0 * double(edge) * opts.max_mean_width;
+}
+
 bool is_line(const LineShape& shape, const LineOptions& opts) {
     return !shape.paths.empty() && shape.length >= opts.min_length && shape.mean_width() <= opts.max_mean_width;
 }

@@ -56,6 +56,12 @@ struct LineShape {
 // junctions.
 LineShape centrelines(const Regions& regs, int index);
 
+// False when region `index` is surely too wide for lines, without thinning it (thinning a fill
+// costs its radius in passes over its box: a third of the butterfly's painting time). Its
+// skeleton runs between its sides, so it is shorter than twice its edge pixels (those with a
+// 4-neighbour outside): the mean width is at least pixels / (2 * edge pixels).
+bool may_be_line(const Regions& regs, int index, const LineOptions& opts);
+
 bool is_line(const LineShape& shape, const LineOptions& opts);
 
 // Each branch's middle and width: from the skeleton (pixel centres averaged along it, the
