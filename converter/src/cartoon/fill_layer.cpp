@@ -4,12 +4,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <limits>
 
 #include "cartoon/line_trace.hpp"
 #include "cartoon/mask_pixels.hpp"
 #include "cartoon/shape_cost.hpp"
 #include "cartoon/regions.hpp"
+#include "paint/worker_pool.hpp"
 
 namespace spt::cartoon {
 
@@ -80,7 +82,8 @@ double strokes_bytes(const std::vector<Stroke>& v) {
 // Region `index` as lines, when it is thin and its best curves (two middles, seven widths each)
 // are within opts.max_error_ratio of `polys`' error and cost fewer bytes. Empty otherwise.
 std::vector<Stroke> lines_instead(const cv::Mat& rgb, const Regions& regs, int index, const std::vector<Stroke>& polys,
-                                  const Renderer& renderer, const Canvas& below, const LineOptions& opts) {
+                                  const Renderer& renderer, const Canvas& below, const LineOptions& opts,
+                                  paint::WorkerPool& pool) {
     if (!may_be_line(regs, index, opts)) return {};
     LineShape shape = centrelines(regs, index);
     if (!is_line(shape, opts)) return {};
@@ -92,20 +95,24 @@ std::vector<Stroke> lines_instead(const cv::Mat& rgb, const Regions& regs, int i
     const cv::Vec3b c = regs.list[size_t(index)].color;
     const Rgba8 color{c[0], c[1], c[2], 255};
     const double poly_err = local_error(rgb, regs, index, polys, renderer, &below);
-    std::vector<Stroke> best;
-    double best_err = 0;
     // The skeleton's middle and width, and those measured on the source (exact on a line over a
-    // flat ground, disturbed where other colours are near): each at seven widenings.
-    for (bool measure : {false, true}) {
-        fit_to_source(shape, rgb, c, measure);
-        for (double widen : {-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0}) {
-            std::vector<Stroke> v;
-            for (CurveStroke& cv : line_curves(shape, color, widen, 8, opts)) v.push_back(Stroke::make_curve(std::move(cv)));
-            const double e = local_error(rgb, regs, index, v, renderer, &below, kSearchGrid);
-            if (best.empty() || e < best_err) { best = std::move(v); best_err = e; }
-        }
-    }
-    best_err = local_error(rgb, regs, index, best, renderer, &below);  // on the grid polygons are judged on
+    // flat ground, disturbed where other colours are near): each at seven widenings, judged in
+    // parallel (each writes its own slot; the first of the least errors wins, as in order).
+    static constexpr double kWiden[] = {-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0};
+    constexpr size_t kWidenings = std::size(kWiden);
+    std::vector<std::vector<Stroke>> cand(2 * kWidenings);
+    std::vector<double> err(cand.size());
+    LineShape measured = shape;
+    fit_to_source(shape, rgb, c, false);
+    fit_to_source(measured, rgb, c, true);
+    pool.run(cand.size(), [&](size_t k) {
+        const LineShape& sh = k < kWidenings ? shape : measured;
+        for (CurveStroke& cv : line_curves(sh, color, kWiden[k % kWidenings], 8, opts)) cand[k].push_back(Stroke::make_curve(std::move(cv)));
+        err[k] = local_error(rgb, regs, index, cand[k], renderer, &below, kSearchGrid);
+    });
+    const size_t pick = size_t(std::min_element(err.begin(), err.end()) - err.begin());
+    std::vector<Stroke> best = std::move(cand[pick]);
+    const double best_err = local_error(rgb, regs, index, best, renderer, &below);  // on the grid polygons are judged on
     // A line may be somewhat farther from the source than the outline (opts.max_error_ratio):
     // the stamps that follow correct the difference, and its bytes are fewer.
     if (best_err <= poly_err * opts.max_error_ratio + 1 && strokes_bytes(best) < strokes_bytes(polys)) return best;
@@ -124,6 +131,7 @@ FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& 
     Regions regs = find_regions(rgb, label_pixels(rgb, palette), palette, opts.min_region_pixels);
     out.regions = regs.list.size();
     Canvas built(uint32_t(rgb.cols), uint32_t(rgb.rows), background);  // the layer so far, for the line test
+    paint::WorkerPool pool(opts.threads);
     LineOptions line_opts = opts.line;  // lines as exact as the outlines (the target's tolerance)
     line_opts.epsilon = std::min(line_opts.epsilon, opts.trace.epsilon);
     // Lines the previous frame drew: their boxes (grown by 3 px) and colours.
@@ -162,7 +170,7 @@ FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& 
         LineOptions lo = line_opts;
         if (given && !was_line(reg)) lo.max_error_ratio = lo.max_error_ratio_inter;
         if (opts.lines)
-            if (std::vector<Stroke> l = lines_instead(rgb, regs, i, polys, renderer, built, lo); !l.empty()) {
+            if (std::vector<Stroke> l = lines_instead(rgb, regs, i, polys, renderer, built, lo, pool); !l.empty()) {
                 polys = std::move(l);
                 ++out.lines;
             }

@@ -28,6 +28,8 @@ struct FillOptions {
     // and smaller (format 1.4: the file needs the curve_grid flag).
     bool lines = true;
     LineOptions line;
+    // Threads judging line candidates (1: the caller's only); the layer does not depend on it.
+    int threads = 1;
 };
 
 struct FillLayer {

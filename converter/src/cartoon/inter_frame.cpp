@@ -1,6 +1,8 @@
 #include "cartoon/inter_frame.hpp"
 
 #include <cmath>
+#include <future>
+#include <thread>
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/frame_diff.hpp"
@@ -125,14 +127,23 @@ bool same_plan(const Frame& a, const Frame& b) {
 }  // namespace
 
 Result<InterFrame> paint_inter_frame(const InterInput& in) {
+    // The two plans are independent (each reads the inputs, the renderer's caches are thread
+    // safe): with more than one thread the lenient one is made beside the strict one.
+    const bool parallel = (in.paint.threads > 0 ? in.paint.threads : int(std::thread::hardware_concurrency())) > 1;
+    auto later = [&](auto fn) { return std::async(parallel ? std::launch::async : std::launch::deferred, fn); };
+    auto lenient_plan = later([&] { return plan_variant(in, true); });
     auto strict = plan_variant(in, false);
+    auto lenient = lenient_plan.get();
     if (!strict) return strict.error();
-    auto lenient = plan_variant(in, true);
     if (!lenient) return lenient.error();
-    paint_stamps(in, *strict);
     // Leniency changed nothing (no old polygon stood in, none was left out): one painting.
-    if (same_plan(strict->frame, lenient->frame)) return std::move(*strict);
-    paint_stamps(in, *lenient);
+    if (same_plan(strict->frame, lenient->frame)) {
+        paint_stamps(in, *strict);
+        return std::move(*strict);
+    }
+    auto lenient_stamps = later([&] { paint_stamps(in, *lenient); });
+    paint_stamps(in, *strict);
+    lenient_stamps.get();
     // Both reach the target: the cheaper. One does: that one. Neither: the closer to it.
     // Without a target, fewer bytes must not cost quality: the lenient one only when it is
     // both cheaper and no worse.

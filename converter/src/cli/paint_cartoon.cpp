@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <thread>
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/cartoon_sequence.hpp"
@@ -26,6 +27,7 @@ int fail(const std::string& msg) { return command_failed("paint", msg); }
 cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
     cartoon::FillOptions f;
     f.lines = o.lines;
+    f.threads = o.paint.threads > 0 ? o.paint.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     if (o.outline_tolerance > 0) {
         f.trace.epsilon = o.outline_tolerance;
         f.search_tolerance = false;
