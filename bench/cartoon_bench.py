@@ -6,13 +6,14 @@ librsvg, potrace).
 usage: python3 bench/cartoon_bench.py [--spt build/bin/spt] [--media ../shared/media]
                                       [--target 36] [--frames 24] [--threads 2]
                                       [--out /tmp/spt-cartoon-bench] [--stills-only]
-                                      [--clips star,taffy,butterfly]
+                                      [--clips star,taffy,butterfly] [--repeat 3]
 
 Clips: cartoon/star and cartoon/taffy (RGBA, flattened over white) and video/butterfly-cartoon.avi,
 the first FRAMES frames of each. For each clip, once on one still (frame 30 of star and taffy,
 40 of the butterfly) and once on the sequence: bytes, PSNR and SSIM against the source
 (`spt compare`: sequences give the PSNR of the mean MSE and the mean SSIM) and painting time
-per frame for --style cartoon and the default painter at --target-psnr TARGET (the butterfly
+per frame (the median of REPEAT paintings, which must be byte-identical) for --style cartoon and
+the default painter at --target-psnr TARGET (the butterfly
 sequence also painted from the .avi itself, --frames 0-(FRAMES-1)); for x265
 (-preset slow) and AV1 (libaom, -cpu-used 4), yuv420p and yuv444p, the CRF whose PSNR is
 closest to the cartoon's from above, and (yuv420p) the CRF whose stream is closest to the
@@ -31,6 +32,7 @@ import gzip
 import json
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -87,12 +89,23 @@ def prepare(media, out, frames):
     return clips
 
 
-def spt_paint(spt, src, base, extra, threads, n):
-    t0 = time.time()
-    r = run([spt, "paint", src, "-o", base + ".spt", "--threads", str(threads), "--progress", "none"] + extra)
-    secs = time.time() - t0
-    if r.returncode:
-        raise SystemExit(f"spt paint {src}: {r.stderr}")
+def spt_paint(spt, src, base, extra, threads, n, repeat=1):
+    """Paints `repeat` times: the median time per frame, and every painting must be the same
+    bytes (the seed fixes them, whatever the machine's load)."""
+    times, first = [], None
+    for _ in range(repeat):
+        t0 = time.time()
+        r = run([spt, "paint", src, "-o", base + ".spt", "--threads", str(threads), "--progress", "none"] + extra)
+        times.append(time.time() - t0)
+        if r.returncode:
+            raise SystemExit(f"spt paint {src}: {r.stderr}")
+        with open(base + ".spt", "rb") as fh:
+            data = fh.read()
+        if first is None:
+            first = data
+        elif data != first:
+            raise SystemExit(f"spt paint {src} {' '.join(extra)}: two paintings differ (not deterministic)")
+    secs = statistics.median(times)
     if n == 1:
         out = base + ".png"
     else:
@@ -235,6 +248,7 @@ def main():
     ap.add_argument("--out", default="/tmp/spt-cartoon-bench")
     ap.add_argument("--stills-only", action="store_true")
     ap.add_argument("--clips", default="star,taffy,butterfly")
+    ap.add_argument("--repeat", type=int, default=3, help="paintings per case; the median time is printed")
     a = ap.parse_args()
     has_aom = "libaom-av1" in run(["ffmpeg", "-hide_banner", "-encoders"]).stdout
     if not has_aom:
@@ -242,7 +256,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     clips = prepare(a.media, a.out, a.frames)
     print(f"target {a.target} dB; spt: whole file, x265: raw HEVC stream, av1: raw OBU stream, potrace: SVG"
-          "; s/frame: painting time")
+          f"; s/frame: painting time, median of {a.repeat}")
     print(f"{'clip':16} {'coder':26} {'bytes':>9} {'PSNR':>7} {'SSIM':>7} {'s/frame':>8}")
     for name, folder, still in clips:
         if name not in a.clips.split(","):
@@ -254,7 +268,7 @@ def main():
         for label, src, ref, ffsrc, n in cases:
             base = os.path.join(a.out, label.replace(" ", "-"))
             rows = []
-            b, cartoon_out, t = spt_paint(a.spt, src, base + "-cartoon", ["--style", "cartoon", "--target-psnr", str(a.target)], a.threads, n)
+            b, cartoon_out, t = spt_paint(a.spt, src, base + "-cartoon", ["--style", "cartoon", "--target-psnr", str(a.target)], a.threads, n, a.repeat)
             cartoon_bytes = b
             cp, cs = compare(a.spt, cartoon_out, ref)
             rows.append(("spt --style cartoon", b, cp, cs, t))
@@ -263,10 +277,10 @@ def main():
                 avi = os.path.join(a.media, "video", "butterfly-cartoon.avi")
                 b, avi_out, t = spt_paint(a.spt, avi, base + "-cartoon-avi",
                                           ["--style", "cartoon", "--target-psnr", str(a.target), "--frames", f"0-{n - 1}"],
-                                          a.threads, n)
+                                          a.threads, n, a.repeat)
                 p, s = compare(a.spt, avi_out, ref)
                 rows.append(("spt --style cartoon (.avi)", b, p, s, t))
-            b, default_out, t = spt_paint(a.spt, src, base + "-default", ["--target-psnr", str(a.target)], a.threads, n)
+            b, default_out, t = spt_paint(a.spt, src, base + "-default", ["--target-psnr", str(a.target)], a.threads, n, a.repeat)
             p, s = compare(a.spt, default_out, ref)
             rows.append(("spt default painter", b, p, s, t))
             codecs = ["x265"] + (["av1"] if has_aom else [])
