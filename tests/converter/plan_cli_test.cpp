@@ -156,6 +156,74 @@ TEST(PlanCli, BadPlansAndShotsAreRefused) {
     EXPECT_FALSE(fs::exists(d.file("x.spt")));
 }
 
+// A cartoon plan: its tasks paint with the cartoon painter (polygons, lines, stamps), and the
+// shots painted apart join to the one-process painting with the source's frame numbers.
+TEST(PlanCli, CartoonPlansPaintCartoonShots) {
+    REQUIRE_TOOL();
+    TempDir d;
+    const std::string media = SPT_MEDIA_DIR;
+    ASSERT_TRUE(fs::exists(media + "/cartoon/star/f.0011.png")) << "the shared media are needed: " << media;
+    fs::create_directories(d.path / "seq");
+    char src[256], dst[64];
+    for (int i = 0; i < 12; ++i) {
+        std::snprintf(src, sizeof src, "%s/cartoon/star/f.%04d.png", media.c_str(), i);
+        std::snprintf(dst, sizeof dst, "s.%04d.png", 101 + i);
+        fs::create_symlink(src, d.path / "seq" / dst);
+    }
+    const std::string seq = (d.path / "seq" / "s.####.png").string(), plan = d.file("plan.json");
+    RunResult r = run_spt(d, {"plan", seq, "-o", plan, "--style", "cartoon", "--target-psnr", "34", "--max-task-frames",
+                              "6", "--seed", "5", "--progress", "none"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto p = spt::plan::read_plan(plan);
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    ASSERT_EQ(p->shots.size(), 2u);
+    ASSERT_GE(p->paint_args.size(), 2u);
+    EXPECT_EQ(p->paint_args[0] + " " + p->paint_args[1], "--style cartoon");
+    r = run_spt(d, {"paint", "--plan", plan, "-o", d.file("whole.spt"), "--progress", "none"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "") << "the shots join without a warning";
+    std::vector<std::string> cat = {"cat"};
+    for (int k : {1, 0}) {
+        const std::string part = d.file("shot" + std::to_string(k) + ".spt");
+        r = run_spt(d, {"paint", "--plan", plan, "--shot", std::to_string(k), "-o", part, "--threads", "1",
+                        "--progress", "none"});
+        ASSERT_EQ(r.code, 0) << r.err;
+    }
+    cat.insert(cat.end(), {d.file("shot0.spt"), d.file("shot1.spt"), "-o", d.file("joined.spt")});
+    r = run_spt(d, cat);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_TRUE(slurp(d.file("whole.spt")) == slurp(d.file("joined.spt"))) << "the join differs from the one-process painting";
+
+    auto rd = spt::Reader::open(d.file("whole.spt"));
+    ASSERT_TRUE(rd.ok());
+    EXPECT_EQ(spt::first_frame_number((*rd)->info()), 101u);
+    EXPECT_EQ((*rd)->frames().size(), 12u);
+    EXPECT_EQ((*rd)->frames()[6].type, spt::FrameType::Key) << "shot 1 starts with a key frame";
+    size_t polygons = 0;
+    for (const spt::Stroke& s : **(*rd)->strokes_at(0)) polygons += s.kind == spt::StrokeKind::Polygon;
+    EXPECT_GE(polygons, 2u) << "painted by the cartoon painter";
+    std::string options;
+    for (const auto& [k, v] : (*rd)->info().metadata)
+        if (k == "painter.options") options = v;
+    EXPECT_NE(options.find("style=cartoon"), std::string::npos) << options;
+    r = run_spt(d, {"render", d.file("whole.spt"), "-o", d.file("r.####.png")});
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = run_spt(d, {"compare", d.file("r.####.png"), seq});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const size_t at = r.out.find("PSNR mean ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    EXPECT_GE(std::stod(r.out.substr(at + 10)), 34.0) << r.out;
+
+    // The cartoon options travel with the plan.
+    r = run_spt(d, {"plan", seq, "-o", d.file("plan2.json"), "--style", "cartoon", "--no-lines", "--outline-tolerance",
+                    "0.5", "--progress", "none"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string text = slurp(d.file("plan2.json"));
+    EXPECT_NE(text.find("\"--no-lines\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"--outline-tolerance\",\n    \"0.5\""), std::string::npos) << text;
+}
+
 TEST(PlanSplit, ShotsSplitIntoBalancedTasksOnKeyFrameSteps) {
     using spt::plan::split_shot;
     EXPECT_EQ(split_shot(0, 99, 10, 0).size(), 1u);

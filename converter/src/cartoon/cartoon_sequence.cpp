@@ -8,6 +8,7 @@
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/inter_frame.hpp"
+#include "spt/concat.hpp"
 #include "spt/reader.hpp"
 #include "spt/writer.hpp"
 #include "video/frame_source.hpp"
@@ -48,6 +49,9 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     info.header = setup.header;
     info.templates = setup.templates;
     info.metadata = opts.metadata;
+    // SPEC.md 3.3: the source's own number of frame 0, so that farm shots join in order.
+    if (frame.number > 0 && video::frames_consecutive(opts.frames))
+        info.metadata.emplace_back(kFirstFrameKey, std::to_string(frame.number));
     WriterOptions wo;
     wo.coding = opts.stored ? Coding::Stored : Coding::Range;
     wo.atomic_rename = opts.atomic_rename;

@@ -37,6 +37,12 @@ const char* orient(paint::OrientMode m) {
 std::vector<std::string> paint_args(const PaintCommandOptions& o) {
     std::vector<std::string> a;
     auto opt = [&](const char* name, const std::string& v) { a.push_back(name); a.push_back(v); };
+    // The painter first: a plan's tasks paint in the style it was made with.
+    if (o.style != "painterly") {
+        opt("--style", o.style);
+        if (o.outline_tolerance > 0) opt("--outline-tolerance", exact(o.outline_tolerance));
+        if (!o.lines) a.push_back("--no-lines");
+    }
     if (o.set_sizes.empty()) {
         opt("--sets", std::to_string(o.sets));
     } else {

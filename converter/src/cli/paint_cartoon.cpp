@@ -196,8 +196,8 @@ Result<double> search_sequence_psnr(const PaintCommandOptions& o, cartoon::Seque
     });
 }
 
-int paint_cartoon_sequence(const PaintCommandOptions& o) {
-    if (!o.preview.empty()) return fail("--preview is for still images; render a sequence with 'spt render'");
+// The sequence painter's options from the command's (no --target-bytes search yet).
+Result<cartoon::SequenceOptions> sequence_options(const PaintCommandOptions& o) {
     cartoon::SequenceOptions s;
     s.input = o.input;
     s.output = o.output;
@@ -215,17 +215,34 @@ int paint_cartoon_sequence(const PaintCommandOptions& o) {
     s.fill.trace.upsample = 4;
     if (!o.templates_dir.empty()) {
         auto t = io::load_templates(o.templates_dir);
-        if (!t) return fail(t.error().message);
+        if (!t) return t.error();
         s.templates = std::move(t.value());
     }
+    return s;
+}
+
+// Paints the sequence of `o` (searching the PSNR target first for --target-bytes) with the
+// file's metadata plus `extra` (entries of the same key replaced); returns the exit code.
+int paint_cartoon_sequence(const PaintCommandOptions& o, const Metadata& extra, uint64_t* frames) {
+    if (!o.preview.empty()) return fail("--preview is for still images; render a sequence with 'spt render'");
+    auto so = sequence_options(o);
+    if (!so) return fail(so.error().message);
+    cartoon::SequenceOptions& s = *so;
     if (o.target_bytes > 0) {
         auto psnr = search_sequence_psnr(o, s);
         if (!psnr) return fail(psnr.error().message);
         s.paint.target_psnr = *psnr;
     }
     s.metadata = sequence_metadata(o, s.paint.target_psnr);
+    for (const auto& [k, v] : extra) {
+        auto it = std::find_if(s.metadata.begin(), s.metadata.end(), [&](const auto& e) { return e.first == k; });
+        if (it != s.metadata.end()) it->second = v;
+        else s.metadata.emplace_back(k, v);
+    }
     cartoon::SequenceReport r;
-    if (Status st = cartoon::paint_sequence(s, r); !st) return fail(st.error().message);
+    const Status st = cartoon::paint_sequence(s, r);
+    if (frames) *frames = r.frames;
+    if (!st) return fail(st.error().message);
     if (o.progress != io::ProgressMode::None)
         std::fprintf(stderr,
                      "spt paint: %s: %llu frames (%llu key, %llu with motion), polygons %llu added %llu kept, %llu stamps, %llu removed; "
@@ -243,10 +260,15 @@ int paint_cartoon_sequence(const PaintCommandOptions& o) {
 int paint_cartoon(const PaintCommandOptions& o) {
     std::error_code ec;
     if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
-        return paint_cartoon_sequence(o);
+        return paint_cartoon_sequence(o, {}, nullptr);
     if (!o.side_by_side.empty()) return fail("--style cartoon: --side-by-side is not supported; use --preview");
     if (!o.rois.empty()) return fail("--style cartoon: regions of interest are not supported");
     return paint_cartoon_still(o);
+}
+
+int paint_cartoon_shot(const PaintCommandOptions& o, const Metadata& metadata, uint64_t& frames) {
+    frames = 0;
+    return paint_cartoon_sequence(o, metadata, &frames);
 }
 
 }  // namespace spt::cli

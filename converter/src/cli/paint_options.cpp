@@ -100,10 +100,11 @@ const char* orient_name(paint::OrientMode m) {
 namespace {
 
 // The options of `spt paint`, declared once: CLI11 parses them and writes --help from them.
-void declare(Args& a) {
+void declare(Args& a, bool plan) {
     a.positional("IN", "an image, an image sequence (shot.####.exr, shot.%04d.png, shot.1-120#.png), a folder "
                        "of frames, or a video file")
-        .option("output", "FILE", "the .spt file to write (required)", 'o')
+        .option("output", "FILE", plan ? "the plan to write, JSON (required); its tasks paint with the options below"
+                                       : "the .spt file to write (required)", 'o')
         .option("style", "NAME", "painterly: stamps everywhere (the paper's painter); cartoon: flat-colour "
                                  "regions as anti-aliased filled polygons, stamps only where they leave an error",
                 0, "painterly")
@@ -234,7 +235,7 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
     const bool plan = std::string(command) == "plan";
     Args a(command, plan ? "plan a farm job: shots of a sequence or video, each a task" : "paint an image, an image sequence or a video into a .spt file",
            plan ? "spt plan IN -o PLAN.json [--max-task-frames N] [paint options]" : "spt paint IN -o OUT.spt [options]");
-    declare(a);
+    declare(a, plan);
     if (plan)
         a.group("farm plan")
             .option("max-task-frames", "N", "split shots longer than N frames into tasks of at most N, at forced key "

@@ -9,6 +9,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/paint_cartoon.hpp"
 #include "plan/plan_parts.hpp"
 #include "spt/atomic_file.hpp"
 #include "spt/concat.hpp"
@@ -48,28 +49,38 @@ int paint_shot(const plan::Plan& p, size_t k, const std::string& output, int thr
     PaintCommandOptions o;
     if (int rc = parse_paint_options(int(args.size()), argv.data(), o); rc >= 0)
         return rc == 0 ? fail("the plan's paint_args ask for help") : rc;
+    // An interrupted or short shot keeps its finished frames in a valid file; a farm must not
+    // take it for a painted shot.
+    auto settle = [&](int rc, bool interrupted, uint64_t frames) {
+        std::error_code ec;
+        if (rc == 0 && !interrupted && frames == s.frames()) return 0;
+        fs::remove(output, ec);
+        return rc != 0 ? rc : fail(output + ": shot " + std::to_string(k) + " painted " + std::to_string(frames) +
+                                       " of its " + std::to_string(s.frames()) + " frames");
+    };
+    std::vector<std::pair<std::string, std::string>> meta = {{"painter.seed", std::to_string(p.seed)}};
+    for (auto& e : plan::shot_metadata(p.id, k, p.shots.size(), s.first, s.last)) meta.push_back(std::move(e));
+    // A whole clip's budget: the shot's share.
+    auto share = [&](uint64_t bytes) {
+        return std::max<uint64_t>(64, uint64_t(std::llround(double(bytes) * double(s.frames()) / double(p.frames()))));
+    };
+    if (o.style == "cartoon") {
+        if (o.target_bytes > 0 && !o.target_bytes_per_second) o.target_bytes = share(o.target_bytes);
+        uint64_t frames = 0;
+        const int rc = paint_cartoon_shot(o, meta, frames);
+        return settle(rc, false, frames);
+    }
     video::VideoPaintOptions v;
     if (int rc = video_options(o, v); rc >= 0) return rc;
     // The plan placed the cuts and a shot has none inside, unless the plan left them to its
     // tasks: then the painter's detector runs on the shot's frames alone, from a fresh state.
     v.detect_cuts = p.cut_scan == "tasks";
-    v.metadata = {{"painter.seed", std::to_string(p.seed)}};
-    for (auto& e : plan::shot_metadata(p.id, k, p.shots.size(), s.first, s.last)) v.metadata.push_back(std::move(e));
-    if (v.target_bytes > 0 && !v.target_bytes_per_second)  // a whole clip's budget: the shot's share
-        v.target_bytes = std::max<uint64_t>(64, uint64_t(std::llround(double(v.target_bytes) * double(s.frames()) /
-                                                                       double(p.frames()))));
+    v.metadata = std::move(meta);
+    if (v.target_bytes > 0 && !v.target_bytes_per_second) v.target_bytes = share(v.target_bytes);
     io::Progress progress(mode, "paint shot " + std::to_string(k), 0);
     video::VideoPaintReport rep;
     const int rc = video::run_video_paint(v, progress, &rep);
-    std::error_code ec;
-    if (rc != 0 || rep.interrupted || rep.frames != s.frames()) {
-        // An interrupted shot keeps its finished frames in a valid file; a farm must not take
-        // it for a painted shot.
-        fs::remove(output, ec);
-        return rc != 0 ? rc : fail(output + ": shot " + std::to_string(k) + " painted " + std::to_string(rep.frames) +
-                                       " of its " + std::to_string(s.frames()) + " frames");
-    }
-    return 0;
+    return settle(rc, rep.interrupted, rep.frames);
 }
 
 int paint_plan(int argc, char** argv) {

@@ -64,13 +64,12 @@ std::string options_text(const VideoPaintOptions& o) {
     return s.str();
 }
 
-// True when a --frames value selects consecutive frame numbers (one span, step 1, or all).
+}  // namespace
+
 bool frames_consecutive(const std::string& frames) {
     Result<io::FrameRange> r = io::parse_frame_range(frames);
     return r && (r->empty() || (r->spans.size() == 1 && r->step(0) == 1));
 }
-
-}  // namespace
 
 Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {
     SignalGuard guard(opts.install_signal_handlers);

@@ -138,6 +138,10 @@ int run_video_paint(const VideoPaintOptions& opts, io::Progress& progress,
 Status video_paint(const VideoPaintOptions& opts, io::Progress& progress,
                    VideoPaintReport* report = nullptr);
 
+// True when a --frames value selects consecutive frame numbers (one span, step 1, or all):
+// then a painting's frame 0 may name its source frame (metadata source.first_frame).
+bool frames_consecutive(const std::string& frames);
+
 // "24" -> 24/1, "30000/1001", "29.97" -> 30000/1001, "23.976" -> 24000/1001, "25.0" -> 25/1.
 Result<Rational> parse_fps(const std::string& text);
 // A container's floating-point rate as the rational it stands for (NTSC rates recognised).
