@@ -37,8 +37,14 @@ TEST(CartoonSequence, StillShapesAreKeptMovingOnesMoved) {
     const int n = 5;
     spt_test::write_frames(dir, n, frame_art);
     const auto r = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("seq.spt"), "--style", "cartoon",
-                                 "--target-psnr", "34", "--progress", "none", "--threads", "2"});
+                                 "--target-psnr", "34", "--progress", "json", "--threads", "2"});
     ASSERT_EQ(r.code, 0) << r.err;
+    // Progress as the other painters report it (the Blender add-on reads it): frames done of the
+    // sequence's count (progress lines come at most about once a second), then the end.
+    EXPECT_EQ(r.out.rfind("{\"event\":\"start\"", 0), 0u) << r.out;
+    const std::string last = r.out.substr(r.out.rfind("{\"event\""));
+    EXPECT_NE(last.find("\"event\":\"end\",\"task\":\"paint\",\"done\":5,\"total\":5"), std::string::npos) << last;
+    EXPECT_NE(last.find("\"ok\":true"), std::string::npos) << last;
     const auto v = run_spt(dir, {"verify", dir.file("seq.spt")});
     EXPECT_EQ(v.code, 0) << v.out << v.err;
 

@@ -58,6 +58,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     auto writer = Writer::create(opts.output, info, wo);
     if (!writer) return writer.error();
 
+    if (opts.progress) opts.progress->set_total(double(source.expected_frames()));
     std::vector<Stroke> live;
     std::vector<cv::Vec3b> palette;
     FillOptions fo = opts.fill;
@@ -144,6 +145,12 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
         // The live list as a decoder keeps it.
         if (Status s = apply_frame(live, f, setup.header); !s) return s;
         const double p = paint::psnr(model, canvas.rgb.data());
+        if (opts.progress) {
+            char detail[160];
+            std::snprintf(detail, sizeof detail, "%s frame %u, %zu strokes added, %zu live, %.1f dB",
+                          f.type == FrameType::Key ? "key" : "inter", index, f.added.size(), live.size(), p);
+            opts.progress->update(double(index + 1), detail);
+        }
         psnr_sum += p;
         rep.min_psnr = std::min(rep.min_psnr, p);
         ++rep.frames;

@@ -11,6 +11,7 @@
 
 #include "cartoon/fill_layer.hpp"
 #include "cartoon/motion_field.hpp"
+#include "io/progress.hpp"
 #include "paint/painter.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
@@ -31,6 +32,9 @@ struct SequenceOptions {
     FillOptions fill;
     MotionOptions motion;
     std::vector<std::pair<std::string, std::string>> metadata;
+    // Told the frame count (when the source knows it) and each frame as it is written; the
+    // caller finishes it. Null: nothing reported.
+    io::Progress* progress = nullptr;
 };
 
 struct SequenceReport {

@@ -12,6 +12,7 @@
 #include "cartoon/cartoon_sequence.hpp"
 #include "cli/commands.hpp"
 #include "io/image_io.hpp"
+#include "io/progress.hpp"
 #include "io/sequence.hpp"
 #include "io/trial_output.hpp"
 #include "io/template_loader.hpp"
@@ -239,9 +240,12 @@ int paint_cartoon_sequence(const PaintCommandOptions& o, const Metadata& extra, 
         if (it != s.metadata.end()) it->second = v;
         else s.metadata.emplace_back(k, v);
     }
+    io::Progress progress(o.progress, "paint", 0);
+    s.progress = &progress;
     cartoon::SequenceReport r;
     const Status st = cartoon::paint_sequence(s, r);
     if (frames) *frames = r.frames;
+    progress.finish(bool(st), st ? o.output : st.error().message);
     if (!st) return fail(st.error().message);
     if (o.progress != io::ProgressMode::None)
         std::fprintf(stderr,
