@@ -103,21 +103,24 @@ Interrupted paint_and_interrupt(const std::vector<std::string>& args, int sig, d
     return r;
 }
 
-// Paints a `frames`-frame 96x64 sequence written into `dir` to dir/out.spt, one thread, and
-// sends `sig` once it has reported 3 frames.
-Interrupted interrupt_a_sequence_paint(const fs::path& dir, int frames, int sig) {
+// Paints a `frames`-frame 96x64 sequence written into `dir` to dir/out.spt, one thread (the
+// painterly painter, or with `cartoon` the cartoon one), and sends `sig` once it has reported 3
+// frames.
+Interrupted interrupt_a_sequence_paint(const fs::path& dir, int frames, int sig, bool cartoon) {
     write_sequence(dir, frames, 96, 64);
-    return paint_and_interrupt({"paint", (dir / "seq.####.png").string(), "-o", (dir / "out.spt").string(), "--sets",
-                                "4", "--max-strokes", "400", "--threads", "1", "--progress", "json"},
-                               sig, 3);
+    std::vector<std::string> args = {"paint", (dir / "seq.####.png").string(), "-o", (dir / "out.spt").string(),
+                                     "--threads", "1", "--progress", "json"};
+    if (cartoon) args.insert(args.end(), {"--style", "cartoon", "--target-psnr", "30"});
+    else args.insert(args.end(), {"--sets", "4", "--max-strokes", "400"});
+    return paint_and_interrupt(args, sig, 3);
 }
 
-void check_interrupt(int sig) {
+void check_interrupt(int sig, bool cartoon = false) {
     if (!have_tool()) GTEST_FAIL() << "spt binary not built";
-    const auto dir = spt_test::temp_dir("cli_sig" + std::to_string(sig));
+    const auto dir = spt_test::temp_dir("cli_sig" + std::to_string(sig) + (cartoon ? "c" : ""));
     const int total = 150;
     const std::string out = (dir / "out.spt").string();
-    const Interrupted r = interrupt_a_sequence_paint(dir, total, sig);
+    const Interrupted r = interrupt_a_sequence_paint(dir, total, sig, cartoon);
     ASSERT_TRUE(r.sent) << "the encode ended before reporting 3 frames";
     EXPECT_FALSE(r.signalled) << "one signal stops cleanly; it must not kill the process";
     EXPECT_FALSE(fs::exists(out + ".partial")) << "a .partial file was left behind";
@@ -153,12 +156,16 @@ TEST(VideoCli, SigintLeavesAValidFileOrNothing) { check_interrupt(SIGINT); }
 
 TEST(VideoCli, SigtermLeavesAValidFileOrNothing) { check_interrupt(SIGTERM); }
 
+TEST(VideoCli, CartoonSigintLeavesAValidFileOrNothing) { check_interrupt(SIGINT, true); }
+
+TEST(VideoCli, CartoonSigtermLeavesAValidFileOrNothing) { check_interrupt(SIGTERM, true); }
+
 // SIGKILL cannot be caught: the output is an unnamed file (O_TMPFILE) until it is complete, so
 // the folder holds nothing new at all afterwards (issue 20).
 TEST(VideoCli, SigkillLeavesNothing) {
     if (!have_tool()) GTEST_FAIL() << "spt binary not built";
     const auto dir = spt_test::temp_dir("cli_sigkill");
-    const Interrupted r = interrupt_a_sequence_paint(dir, 150, SIGKILL);
+    const Interrupted r = interrupt_a_sequence_paint(dir, 150, SIGKILL, false);
     ASSERT_TRUE(r.sent) << "the encode ended before reporting 3 frames";
     EXPECT_TRUE(r.signalled);
     for (const auto& e : fs::directory_iterator(dir)) {

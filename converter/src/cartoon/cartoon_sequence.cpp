@@ -12,6 +12,7 @@
 #include "spt/reader.hpp"
 #include "spt/writer.hpp"
 #include "video/frame_source.hpp"
+#include "video/stop_signal.hpp"
 #include "video/video_encoder.hpp"
 #include "video/video_paint.hpp"
 
@@ -19,6 +20,7 @@ namespace spt::cartoon {
 
 Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     const auto t0 = std::chrono::steady_clock::now();
+    video::StopSignals stop(opts.install_signal_handlers);
     auto src = video::open_source(opts.input, opts.frames, opts.skip_bad_frames);
     if (!src) return src.error();
     video::FrameSource& source = **src;
@@ -157,6 +159,10 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
         ++index;
         ++since_key;
         prev = img;
+        if (video::StopSignals::requested()) {
+            rep.interrupted = true;
+            break;
+        }
         got = source.next(frame);
         if (!got) {
             (*writer)->abort();
@@ -168,6 +174,9 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     rep.bytes = (*writer)->stats().total_bytes;
     rep.mean_psnr = rep.frames ? psnr_sum / double(rep.frames) : 0;
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (rep.interrupted)
+        return make_error(Code::BadState, "interrupted: " + opts.output + " holds the " + std::to_string(rep.frames) +
+                                              " finished frames");
     return {};
 }
 

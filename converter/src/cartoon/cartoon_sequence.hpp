@@ -35,6 +35,9 @@ struct SequenceOptions {
     // Told the frame count (when the source knows it) and each frame as it is written; the
     // caller finishes it. Null: nothing reported.
     io::Progress* progress = nullptr;
+    // SIGINT/SIGTERM stop the painting after a finished frame (video/stop_signal.hpp); the
+    // file then holds the frames done and paint_sequence says so (report.interrupted).
+    bool install_signal_handlers = true;
 };
 
 struct SequenceReport {
@@ -42,8 +45,11 @@ struct SequenceReport {
     uint64_t polygons_added = 0, polygons_kept = 0, stamps_added = 0, removed = 0;
     double mean_psnr = 0, min_psnr = 99, seconds = 0;
     Rational fps{24, 1};  // the file's frame rate
+    bool interrupted = false;  // stopped by a signal: the file is valid and holds `frames`
 };
 
+// Fails with Code::BadState and report.interrupted set when a signal stopped it after a
+// finished frame (the output is then a valid file of those frames).
 Status paint_sequence(const SequenceOptions& opts, SequenceReport& report);
 
 }  // namespace spt::cartoon

@@ -18,6 +18,7 @@
 #include "io/template_loader.hpp"
 #include "spt/version.hpp"
 #include "spt/writer.hpp"
+#include "video/video_paint.hpp"
 
 namespace spt::cli {
 
@@ -246,6 +247,10 @@ int paint_cartoon_sequence(const PaintCommandOptions& o, const Metadata& extra, 
     const Status st = cartoon::paint_sequence(s, r);
     if (frames) *frames = r.frames;
     progress.finish(bool(st), st ? o.output : st.error().message);
+    if (!st && r.interrupted) {  // stopped by a signal after a finished frame: the output is valid
+        std::fprintf(stderr, "spt paint: %s\n", st.error().message.c_str());
+        return video::kExitInterrupted;
+    }
     if (!st) return fail(st.error().message);
     if (o.progress != io::ProgressMode::None)
         std::fprintf(stderr,

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -11,6 +10,7 @@
 #include "io/sequence.hpp"
 #include "video/frame_source.hpp"
 #include "io/roi_file.hpp"
+#include "video/stop_signal.hpp"
 #include "video/video_encoder.hpp"
 #include "spt/utf8.hpp"
 #include "spt/concat.hpp"
@@ -19,40 +19,9 @@ namespace spt::video {
 
 namespace {
 
-std::atomic<bool> g_signal_stop{false};
-
 // The least peak of a sequence's linear proxy (paint/linear_proxy.hpp): a dark first frame
 // leaves room for highlights later.
 constexpr double kSequencePeakMin = 16.0;
-// The first signal asks for a clean stop after the current frame; a second one ends the
-// process the default way (the output is then an unnamed file that vanishes with it, never
-// anything under its final name: spt/atomic_file.hpp).
-extern "C" void on_stop_signal(int sig) {
-    if (g_signal_stop.exchange(true)) {
-        std::signal(sig, SIG_DFL);
-        std::raise(sig);
-    }
-}
-
-// Installs SIGINT/SIGTERM handlers for the encode's lifetime and restores the old ones.
-class SignalGuard {
-public:
-    explicit SignalGuard(bool install) : installed_(install) {
-        if (!installed_) return;
-        g_signal_stop.store(false);
-        old_int_ = std::signal(SIGINT, on_stop_signal);
-        old_term_ = std::signal(SIGTERM, on_stop_signal);
-    }
-    ~SignalGuard() {
-        if (!installed_) return;
-        std::signal(SIGINT, old_int_);
-        std::signal(SIGTERM, old_term_);
-    }
-private:
-    bool installed_;
-    void (*old_int_)(int) = SIG_DFL;
-    void (*old_term_)(int) = SIG_DFL;
-};
 
 std::string options_text(const VideoPaintOptions& o) {
     std::ostringstream s;
@@ -72,9 +41,9 @@ bool frames_consecutive(const std::string& frames) {
 }
 
 Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {
-    SignalGuard guard(opts.install_signal_handlers);
+    StopSignals guard(opts.install_signal_handlers);
     auto stop_requested = [&] {
-        return g_signal_stop.load() || (opts.stop && opts.stop->load());
+        return StopSignals::requested() || (opts.stop && opts.stop->load());
     };
 
     if (opts.output.empty()) return make_error(Code::InvalidArgument, "no output file given");
