@@ -76,6 +76,28 @@ TEST(CartoonSequence, StillShapesAreKeptMovingOnesMoved) {
     }
 }
 
+// A missing frame stops the painting with an error naming it and leaves no output; with
+// --skip-bad-frames the previous frame stands in, said on stderr, and every frame is painted.
+TEST(CartoonSequence, AMissingFrameIsAnErrorOrSkippedWhenAsked) {
+    TempDir dir;
+    spt_test::write_frames(dir, 5, frame_art);
+    std::filesystem::remove(dir.file("f.0002.png"));
+    const std::vector<std::string> args = {"paint", dir.file("f.####.png"), "-o", dir.file("seq.spt"), "--style", "cartoon",
+                                           "--frames", "0-4", "--target-psnr", "30", "--progress", "none"};
+    auto r = run_spt(dir, args);
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("f.0002.png"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("seq.spt")));
+    std::vector<std::string> skip = args;
+    skip.push_back("--skip-bad-frames");
+    r = run_spt(dir, skip);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("repeating the previous frame"), std::string::npos) << r.err;
+    auto rd = spt::Reader::open(dir.file("seq.spt"));
+    ASSERT_TRUE(rd);
+    EXPECT_EQ((*rd)->frames().size(), 5u);
+}
+
 // The butterfly clip painted from the .avi itself: the video's frames (rate 18), every frame
 // at the target against the decoded source, the file verifies.
 TEST(CartoonSequence, PaintsAVideoFileEndToEnd) {

@@ -69,6 +69,8 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     double psnr_sum = 0;
     uint32_t index = 0, since_key = 0;
     for (;;) {
+        if (frame.repeated)  // --skip-bad-frames, as the video painter says it
+            std::fprintf(stderr, "spt paint: warning: %s; repeating the previous frame\n", frame.problem.c_str());
         const io::Image& img = frame.image;
         const cv::Mat rgb(int(H), int(W), CV_8UC3, const_cast<uint8_t*>(img.rgb.data()));
         const paint::ImageView model{W, H, img.rgb.data()};
