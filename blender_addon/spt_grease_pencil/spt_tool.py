@@ -109,7 +109,7 @@ def paint_args(opts: dict) -> list:
         a += ["--templates", opts["templates"]]
     if opts.get("key_interval"):
         a += ["--keyframe-interval", str(opts["key_interval"])]
-    if opts.get("roi"):
+    if opts.get("roi") and opts.get("style", "painterly") != "cartoon":  # cartoons paint the whole frame
         a += ["--roi-file", opts["roi"]]
     if opts.get("frames"):
         a += ["--frames", opts["frames"]]

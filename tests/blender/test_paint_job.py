@@ -120,9 +120,33 @@ class Cancel(unittest.TestCase):
         self.assertFalse(os.path.exists(out))
 
 
+class CartoonJob(unittest.TestCase):
+    """The panel's Cartoon style: a real paint of a short sequence reports progress and writes a
+    cartoon; an ROI file set in the panel is not passed (the cartoon painter refuses ROIs)."""
+
+    def test_cartoon_sequence_paints_with_progress_and_without_rois(self):
+        with tempfile.TemporaryDirectory() as d:
+            src = write_sequence(os.path.join(d, "seq"), 4)
+            roi = os.path.join(d, "roi.json")
+            with open(roi, "w") as f:
+                f.write('{"rois":[{"x":1,"y":1,"w":8,"h":8}]}')
+            opts = {"style": "cartoon", "target_psnr": 30, "seed": 1, "frames": "1-4", "roi": roi}
+            self.assertNotIn("--roi-file", spt_tool.paint_args(opts))
+            self.assertIn("--roi-file", spt_tool.paint_args(dict(opts, style="painterly")))
+            out = os.path.join(d, "out.spt")
+            job = spt_tool.PaintJob(SPT, src, out, opts)
+            job.wait()
+            self.assertTrue(os.path.isfile(out))
+            with open(out, "rb") as f:
+                data = f.read()
+            self.assertIn(b"style=cartoon", data)
+            self.assertEqual(job.percent, 100.0)
+
+
 if __name__ == "__main__":
     if not SPT or not os.path.isfile(SPT):
         print(f"FAIL: spt not built ({SPT or 'no path given'})")
         sys.exit(1)
-    r = unittest.TextTestRunner(verbosity=2).run(unittest.defaultTestLoader.loadTestsFromTestCase(Cancel))
+    suite = unittest.TestSuite([unittest.defaultTestLoader.loadTestsFromTestCase(c) for c in (Cancel, CartoonJob)])
+    r = unittest.TextTestRunner(verbosity=2).run(suite)
     sys.exit(0 if r.wasSuccessful() else 1)

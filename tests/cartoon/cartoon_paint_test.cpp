@@ -179,6 +179,28 @@ TEST(CartoonCli, CartoonOptionsNeedTheCartoonStyle) {
     }
 }
 
+// The painterly options the cartoon painter does not apply are usage errors, not ignored.
+TEST(CartoonCli, PainterlyOnlyOptionsAreRefusedByName) {
+    TempDir dir;
+    const cv::Mat img = flat_art();
+    ASSERT_TRUE(spt::io::write_image(dir.file("art.png"), uint32_t(img.cols), uint32_t(img.rows), img.data));
+    const std::vector<std::vector<std::string>> cases = {
+        {"--alpha", "on"}, {"--color-encoding", "linear"}, {"--colorspace", "sRGB"}, {"--layer", "ViewLayer.Combined"},
+        {"--roi", "1,1,8,8"}, {"--flow-orientation"}};
+    for (const auto& extra : cases) {
+        std::vector<std::string> args = {"paint", dir.file("art.png"), "-o", dir.file("x.spt"), "--style", "cartoon",
+                                         "--progress", "none"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const auto r = run_spt(dir, args);
+        EXPECT_EQ(r.code, 2) << extra[0] << ": " << r.err;
+        EXPECT_NE(r.err.find("--style cartoon does not support " + extra[0]), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir.file("x.spt")));
+    }
+    // What it does apply stays accepted.
+    EXPECT_EQ(run_spt(dir, {"paint", dir.file("art.png"), "-o", dir.file("x.spt"), "--style", "cartoon", "--alpha", "off",
+                            "--color-encoding", "srgb8", "--progress", "none"}).code, 0);
+}
+
 TEST(CartoonCli, StarFrameReaches36dBInFewBytes) {
     const fs::path src = fs::path(SPT_MEDIA_DIR) / "cartoon/star/f.0030.png";
     ASSERT_TRUE(fs::exists(src)) << src << " is missing: the shared media are needed for this test";

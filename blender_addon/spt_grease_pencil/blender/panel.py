@@ -63,7 +63,9 @@ class SPT_PT_paint(bpy.types.Panel):
         col.prop(st, "target_psnr")
         col.prop(st, "templates")
         col.prop(st, "key_interval")
-        col.prop(st, "roi")
+        roi = col.row()
+        roi.active = st.style != 'CARTOON'  # the cartoon painter paints the whole frame
+        roi.prop(st, "roi")
         col.prop(st, "seed")
         col.prop(st, "layering")
         if st.running:

@@ -387,6 +387,19 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
             o.rois.push_back(s);
         }
     }
+    // What the cartoon painter does not do is said, not ignored: it paints the whole frame in
+    // 8-bit sRGB over --background.
+    if (o.style == "cartoon") {
+        std::string no;
+        if (o.alpha == "on") no = "--alpha on (it paints over --background; --alpha off flattens the input's alpha)";
+        else if (o.color_encoding == "linear") no = "--color-encoding linear (it paints 8-bit sRGB)";
+        else if (!o.colorspace.empty()) no = "--colorspace (it reads the input as 8-bit sRGB)";
+        else if (!o.ocio_config.empty()) no = "--ocio (it reads the input as 8-bit sRGB)";
+        else if (!o.layer.empty()) no = "--layer (it reads the input's RGBA channels)";
+        else if (!o.rois.empty()) no = a.has("roi") ? "--roi" : "--roi-file";
+        else if (o.flow_orientation) no = "--flow-orientation";
+        if (!no.empty()) return bad("--style cartoon does not support " + no);
+    }
     return -1;
 }
 
