@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <future>
+#include <thread>
 
 #include <opencv2/imgproc.hpp>
 
@@ -17,6 +19,59 @@
 #include "video/video_paint.hpp"
 
 namespace spt::cartoon {
+
+namespace {
+
+// Outline tolerances a key frame also tries when its polygons fall short of the target (the
+// search's finest, 0.35 px, is the first). Key frames alone at 36 dB (--frames 0-0), bytes at
+// 0.25 / 0.35 / 0.5 px: taffy 20,434 / 18,039 / 18,867, butterfly 31,029 / 29,934 / 27,313; the
+// 12 frames: taffy 287,908 / 258,230 / 305,577, butterfly 59,729 / 56,775 / 55,822.
+constexpr double kKeyTolerances[] = {0.25, 0.5};
+
+struct KeyFrame {
+    Frame frame;            // the key frame: polygons and lines, then stamps
+    Canvas canvas;          // as a decoder renders it
+    FillLayer fill;         // its palette, grid and tolerance (strokes moved into `frame`)
+    bool short_of_target = false;  // the polygons alone missed the PSNR target
+    uint64_t polygons = 0, stamps = 0;
+};
+
+// A key frame painted with the fill options `fo` (palette, grid and tolerance searched).
+Result<KeyFrame> paint_key(const cv::Mat& rgb, const paint::ImageView& model, const Renderer& renderer,
+                           const paint::PaintSetup& setup, const SequenceOptions& opts, const FillOptions& fo,
+                           uint32_t index) {
+    KeyFrame k;
+    k.canvas = Canvas(model.width, model.height, opts.background);
+    double p = 0;
+    k.fill = fill_for_target(rgb, opts.background, renderer, fo, opts.paint.target_psnr, nullptr, k.canvas, p);
+    Frame& f = k.frame;
+    f.type = FrameType::Key;
+    f.added = std::move(k.fill.strokes);
+    k.fill.strokes.clear();
+    k.polygons = f.added.size();
+    // The canvas before the residual stamps: the polygons as a decoder draws them.
+    if (Status s = renderer.render(k.canvas, f.added); !s) return s.error();
+    paint::PaintOptions po = opts.paint;
+    po.seed = video::frame_seed(opts.paint.seed, index);
+    // As on inter frames (inter_frame.hpp). Key frame lambda times 1 / 8 / 16 / 32, with inter
+    // frames' at 16, 12 frames at 36 dB: butterfly 78,028 / 62,804 / 61,559 / 59,860 bytes (its
+    // key frame 55,475 -> 35,359 at 16), taffy 399,014 / 386,954 / 384,468 / 384,329, star 3,982
+    // throughout (its polygons reach the target).
+    if (po.target_psnr > 0) po.lambda *= kResidualLambdaScale;
+    k.short_of_target = po.target_psnr > 0 && p < po.target_psnr;
+    if (!(po.target_psnr > 0 && paint::psnr(model, k.canvas.rgb.data()) >= po.target_psnr)) {
+        const std::vector<uint8_t> region = residual_region(model, k.canvas, 24, 2);
+        if (!region.empty()) {
+            std::vector<Stroke> stamps;
+            paint::paint(model, k.canvas, renderer, setup, po, stamps, &region);
+            k.stamps = stamps.size();
+            f.added.insert(f.added.end(), stamps.begin(), stamps.end());
+        }
+    }
+    return k;
+}
+
+}  // namespace
 
 Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -61,6 +116,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     if (!writer) return writer.error();
 
     if (opts.progress) opts.progress->set_total(double(source.expected_frames()));
+    const bool parallel = (opts.paint.threads > 0 ? opts.paint.threads : int(std::thread::hardware_concurrency())) > 1;
     std::vector<Stroke> live;
     std::vector<cv::Vec3b> palette;
     FillOptions fo = opts.fill;
@@ -75,45 +131,46 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
         const cv::Mat rgb(int(H), int(W), CV_8UC3, const_cast<uint8_t*>(img.rgb.data()));
         const paint::ImageView model{W, H, img.rgb.data()};
         const bool key = index == 0 || since_key >= uint32_t(opts.keyframe_interval);
-        // Key frames choose the palette, grid and outline tolerance for their interval, so that
-        // what stays still traces the same in the frames after.
-        FillLayer fill;
-        if (key) {
-            fo = opts.fill;
-            double p = 0;
-            fill = fill_for_target(rgb, opts.background, **renderer, fo, opts.paint.target_psnr, nullptr, canvas, p);
-            palette = fill.palette;
-            fo.grids = {fill.grid ? fill.grid : uint8_t(4)};
-            fo.trace.epsilon = fill.tolerance;
-        } else {
-            fill = build_fill_layer(rgb, opts.background, **renderer, fo, &palette, &live);
-        }
         Frame f;
         if (key) {
-            f.type = FrameType::Key;
-            f.added = std::move(fill.strokes);
-            rep.polygons_added += f.added.size();
-            ++rep.key_frames;
-            since_key = 0;
-            // The canvas before the residual stamps: the polygons as a decoder draws them.
-            if (Status s = (*renderer)->render(canvas, f.added); !s) return s;
-            paint::PaintOptions po = opts.paint;
-            po.seed = video::frame_seed(opts.paint.seed, index);
-            // As on inter frames (inter_frame.hpp). Key frame lambda times 1 / 8 / 16 / 32, with
-            // inter frames' at 16, 12 frames at 36 dB: butterfly 78,028 / 62,804 / 61,559 /
-            // 59,860 bytes (its key frame 55,475 -> 35,359 at 16), taffy 399,014 / 386,954 /
-            // 384,468 / 384,329, star 3,982 throughout (its polygons reach the target).
-            if (po.target_psnr > 0) po.lambda *= kResidualLambdaScale;
-            if (!(po.target_psnr > 0 && paint::psnr(model, canvas.rgb.data()) >= po.target_psnr)) {
-                const std::vector<uint8_t> region = residual_region(model, canvas, 24, 2);
-                if (!region.empty()) {
-                    std::vector<Stroke> stamps;
-                    paint::paint(model, canvas, **renderer, setup, po, stamps, &region);
-                    rep.stamps_added += stamps.size();
-                    f.added.insert(f.added.end(), stamps.begin(), stamps.end());
+            // Key frames choose the palette, grid and outline tolerance for their interval, so
+            // that what stays still traces the same in the frames after.
+            auto painted = paint_key(rgb, model, **renderer, setup, opts, opts.fill, index);
+            if (!painted) return painted.error();
+            KeyFrame k = std::move(*painted);
+            if (k.short_of_target && opts.fill.search_tolerance) {
+                // Stamps make up what the polygons miss, and which tolerance trades vertices for
+                // stamps best depends on the picture: the key frame's cost decides it for the
+                // interval (kKeyTolerances). The paintings are independent: side by side when
+                // there are threads, the first of the least cost kept.
+                auto at = [&](double tol) {
+                    FillOptions t = opts.fill;
+                    t.search_tolerance = false;
+                    t.trace.epsilon = tol;
+                    return paint_key(rgb, model, **renderer, setup, opts, t, index);
+                };
+                auto second = std::async(parallel ? std::launch::async : std::launch::deferred, at, kKeyTolerances[1]);
+                Result<KeyFrame> candidates[2] = {at(kKeyTolerances[0]), second.get()};
+                for (Result<KeyFrame>& c : candidates) {
+                    if (!c) return c.error();
+                    if (std::getenv("SPT_CARTOON_DEBUG"))
+                        std::fprintf(stderr, "key frame %u: tolerance %.2f cost %.0f, %.2f cost %.0f\n", index,
+                                     k.fill.tolerance, frame_cost(k.frame), c->fill.tolerance, frame_cost(c->frame));
+                    if (frame_cost(c->frame) < frame_cost(k.frame)) k = std::move(*c);
                 }
             }
+            palette = k.fill.palette;
+            fo = opts.fill;
+            fo.grids = {k.fill.grid ? k.fill.grid : uint8_t(4)};
+            fo.trace.epsilon = k.fill.tolerance;
+            f = std::move(k.frame);
+            canvas = std::move(k.canvas);
+            rep.polygons_added += k.polygons;
+            rep.stamps_added += k.stamps;
+            ++rep.key_frames;
+            since_key = 0;
         } else {
+            const FillLayer fill = build_fill_layer(rgb, opts.background, **renderer, fo, &palette, &live);
             InterInput in;
             in.live = &live;
             in.polygons = &fill.strokes;
