@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <string>
 #include <thread>
 
@@ -68,19 +69,30 @@ Result<double> psnr_for_budget(const PaintCommandOptions& o, int steps,
     return psnr;
 }
 
-// Paints `model` with `po` and writes it to o.output, or only to `trial` when given; returns the
-// file's bytes.
-Result<uint64_t> paint_write(const PaintCommandOptions& o, const paint::ImageView& model, const paint::PaintSetup& setup,
-                             const Renderer& renderer, const paint::PaintOptions& po, const io::TrialOutput* trial,
-                             Canvas& canvas, cartoon::CartoonStats& st) {
+// A still painting: its strokes, the canvas a decoder shows and the painter's figures.
+struct Still {
     std::vector<Stroke> strokes;
-    st = cartoon::paint_cartoon(model, canvas, renderer, setup, po, fill_options(o), strokes);
+    Canvas canvas;
+    cartoon::CartoonStats st;
+};
+
+Still paint_still(const PaintCommandOptions& o, const paint::ImageView& model, const paint::PaintSetup& setup,
+                  const Renderer& renderer, const paint::PaintOptions& po) {
+    Still p;
+    p.canvas = Canvas(model.width, model.height, o.background);
+    p.st = cartoon::paint_cartoon(model, p.canvas, renderer, setup, po, fill_options(o), p.strokes);
+    return p;
+}
+
+// Writes `p` to o.output, or only to `trial` when given; returns the file's bytes.
+Result<uint64_t> write_still(const PaintCommandOptions& o, const paint::PaintSetup& setup, const paint::PaintOptions& po,
+                             const Still& p, const io::TrialOutput* trial) {
     StreamInfo info;
     info.header = setup.header;
     info.templates = setup.templates;
     // Lines are curves with a grid (format 1.4); a painting without them stays 1.2.
-    for (const Stroke& s : strokes) info.header.curve_grid = info.header.curve_grid || (s.kind == StrokeKind::Curve && s.curve.supersample);
-    if (st.stamps.strokes == 0) {
+    for (const Stroke& s : p.strokes) info.header.curve_grid = info.header.curve_grid || (s.kind == StrokeKind::Curve && s.curve.supersample);
+    if (p.st.stamps.strokes == 0) {
         // Polygons only: the stamps' sets, orientations and templates (about 400 bytes, a
         // third of a flat cartoon frame) are not needed to decode it.
         info.templates.clear();
@@ -105,7 +117,7 @@ Result<uint64_t> paint_write(const PaintCommandOptions& o, const paint::ImageVie
     auto writer = Writer::create(path, info, wo);
     if (!writer) return explain(writer.error());
     Frame frame;
-    frame.added = std::move(strokes);
+    frame.added = p.strokes;
     Status s = (*writer)->append(frame);
     if (s) s = (*writer)->finish();
     if (!s) {
@@ -132,54 +144,60 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
     if (!renderer) return fail("cannot set up the renderer: " + renderer.error().message);
 
     const paint::ImageView model{W, H, img->rgb.data()};
-    Canvas canvas(W, H, o.background);
-    cartoon::CartoonStats st;
     paint::PaintOptions po = o.paint;
     if (o.target_bytes > 0) {
         auto trial = io::TrialOutput::create(o.output);
         if (!trial) return fail(trial.error().message);
         auto psnr = psnr_for_budget(o, 8, [&](double target) -> Result<TrialSize> {
             po.target_psnr = target;
-            auto b = paint_write(o, model, setup, **renderer, po, &*trial, canvas, st);
+            auto b = write_still(o, setup, po, paint_still(o, model, setup, **renderer, po), &*trial);
             if (!b) return b.error();
             return TrialSize{*b, double(o.target_bytes)};
         });
         if (!psnr) return fail(psnr.error().message);
         po.target_psnr = *psnr;
     }
-    auto written = paint_write(o, model, setup, **renderer, po, nullptr, canvas, st);
-    if (!written) return fail(written.error().message);
-    uint64_t bytes = *written;
+    Still best = paint_still(o, model, setup, **renderer, po);
+    PaintCommandOptions best_opts = o;
     // The polygons alone short of the target: stamps make up the rest, and which outline
     // tolerance trades vertices for stamps best depends on the picture (36 dB, bytes at 0.25 /
     // 0.35 / 0.5 px: taffy frame 30 25,931 / 29,760 / 39,899, frame 55 25,371 / 27,777 / 38,503,
     // frame 0 19,807 / 18,211 / 20,585; butterfly frame 40 27,604 / 25,778 / 24,789, frame 120
-    // 29,603 / 27,773 / 26,344). The two others are tried, and the smallest file is written.
-    if (po.target_psnr > 0 && o.target_bytes == 0 && o.outline_tolerance == 0 && st.fill_psnr < po.target_psnr) {
-        auto trial = io::TrialOutput::create(o.output);
-        if (!trial) return fail(trial.error().message);
-        const Canvas painted = canvas;
-        const cartoon::CartoonStats painted_st = st;
-        PaintCommandOptions best = o;
-        for (double tol : {0.25, 0.5}) {
-            PaintCommandOptions t = o;
-            t.outline_tolerance = tol;
-            auto b = paint_write(t, model, setup, **renderer, po, &*trial, canvas, st);
-            if (!b) return fail(b.error().message);
-            if (*b < bytes) {
-                bytes = *b;
-                best = t;
-            }
+    // 29,603 / 27,773 / 26,344). The two others are painted too (side by side when there are
+    // threads; each coded to a trial file of its own), and the smallest file is written.
+    if (po.target_psnr > 0 && o.target_bytes == 0 && o.outline_tolerance == 0 && best.st.fill_psnr < po.target_psnr) {
+        struct Trial {
+            PaintCommandOptions opts;
+            Still still;
+            Result<uint64_t> bytes = uint64_t(0);
+        };
+        auto attempt = [&](double tol) {
+            Trial t{o, {}, uint64_t(0)};
+            t.opts.outline_tolerance = tol;  // 0: the default search, as painted above
+            if (tol > 0) t.still = paint_still(t.opts, model, setup, **renderer, po);
+            const Still& s = tol > 0 ? t.still : best;
+            auto out = io::TrialOutput::create(o.output);
+            t.bytes = out ? write_still(t.opts, setup, po, s, &*out) : Result<uint64_t>(out.error());
+            return t;
+        };
+        const bool parallel = (o.paint.threads > 0 ? o.paint.threads : int(std::thread::hardware_concurrency())) > 1;
+        auto coarse = std::async(parallel ? std::launch::async : std::launch::deferred, attempt, 0.5);
+        Trial trials[3] = {attempt(0), attempt(0.25), coarse.get()};
+        size_t pick = 0;
+        for (size_t i = 0; i < 3; ++i) {
+            if (!trials[i].bytes) return fail(trials[i].bytes.error().message);
+            if (*trials[i].bytes < *trials[pick].bytes) pick = i;
         }
-        if (best.outline_tolerance == 0) {
-            canvas = painted;
-            st = painted_st;
-        } else {
-            written = paint_write(best, model, setup, **renderer, po, nullptr, canvas, st);
-            if (!written) return fail(written.error().message);
-            bytes = *written;
+        if (pick > 0) {
+            best = std::move(trials[pick].still);
+            best_opts = trials[pick].opts;
         }
     }
+    auto written = write_still(best_opts, setup, po, best, nullptr);
+    if (!written) return fail(written.error().message);
+    const uint64_t bytes = *written;
+    const Canvas& canvas = best.canvas;
+    const cartoon::CartoonStats& st = best.st;
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!o.preview.empty())
         if (Status p = io::write_image(o.preview, canvas); !p) return fail(p.error().message);
