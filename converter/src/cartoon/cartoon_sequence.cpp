@@ -22,11 +22,14 @@ namespace spt::cartoon {
 
 namespace {
 
-// Outline tolerances a key frame also tries when its polygons fall short of the target (the
-// search's finest, 0.35 px, is the first). Key frames alone at 36 dB (--frames 0-0), bytes at
-// 0.25 / 0.35 / 0.5 px: taffy 20,434 / 18,039 / 18,867, butterfly 31,029 / 29,934 / 27,313; the
-// 12 frames: taffy 287,908 / 258,230 / 305,577, butterfly 59,729 / 56,775 / 55,822.
-constexpr double kKeyTolerances[] = {0.25, 0.5};
+// The outline tolerance a key frame also tries when its polygons fall short of the target (the
+// search's finest, 0.35 px, comes first). Only a coarser one: a finer outline follows noise from
+// frame to frame, and the inter frames trace it again (the grain test: 3 polygons added a frame
+// at 0.25 px, chosen for its key frame's 2% fewer bytes). Key frames alone at 36 dB (--frames
+// 0-0), bytes at 0.25 / 0.35 / 0.5 px: taffy 20,434 / 18,039 / 18,867, butterfly 31,029 /
+// 29,934 / 27,313; the 12 frames: taffy 287,908 / 258,230 / 305,577, butterfly 59,729 / 56,775 /
+// 55,822.
+constexpr double kCoarserKeyTolerance = 0.5;
 
 struct KeyFrame {
     Frame frame;            // the key frame: polygons and lines, then stamps
@@ -134,31 +137,30 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
         Frame f;
         if (key) {
             // Key frames choose the palette, grid and outline tolerance for their interval, so
-            // that what stays still traces the same in the frames after.
+            // that what stays still traces the same in the frames after. A key frame short of
+            // its target is also painted with a coarser outline
+            // (kCoarserKeyTolerance): stamps make up what the polygons miss, and which tolerance
+            // trades vertices for stamps best depends on the picture; the key frame's cost
+            // decides it for the interval. With threads the coarser painting runs beside the
+            // first (unused when that one reaches the target).
+            const bool may_try = opts.fill.search_tolerance && opts.paint.target_psnr > 0;
+            auto coarser = std::async(parallel && may_try ? std::launch::async : std::launch::deferred, [&] {
+                FillOptions t = opts.fill;
+                t.search_tolerance = false;
+                t.trace.epsilon = kCoarserKeyTolerance;
+                return paint_key(rgb, model, **renderer, setup, opts, t, index);
+            });
             auto painted = paint_key(rgb, model, **renderer, setup, opts, opts.fill, index);
             if (!painted) return painted.error();
             KeyFrame k = std::move(*painted);
-            if (k.short_of_target && opts.fill.search_tolerance) {
-                // Stamps make up what the polygons miss, and which tolerance trades vertices for
-                // stamps best depends on the picture: the key frame's cost decides it for the
-                // interval (kKeyTolerances). The paintings are independent: side by side when
-                // there are threads, the first of the least cost kept.
-                auto at = [&](double tol) {
-                    FillOptions t = opts.fill;
-                    t.search_tolerance = false;
-                    t.trace.epsilon = tol;
-                    return paint_key(rgb, model, **renderer, setup, opts, t, index);
-                };
-                auto second = std::async(parallel ? std::launch::async : std::launch::deferred, at, kKeyTolerances[1]);
-                Result<KeyFrame> candidates[2] = {at(kKeyTolerances[0]), second.get()};
-                for (Result<KeyFrame>& c : candidates) {
-                    if (!c) return c.error();
-                    if (std::getenv("SPT_CARTOON_DEBUG"))
-                        std::fprintf(stderr, "key frame %u: tolerance %.2f cost %.0f, %.2f cost %.0f\n", index,
-                                     k.fill.tolerance, frame_cost(k.frame), c->fill.tolerance, frame_cost(c->frame));
-                    if (frame_cost(c->frame) < frame_cost(k.frame)) k = std::move(*c);
-                }
-            }
+            if (k.short_of_target && may_try) {
+                auto c = coarser.get();
+                if (!c) return c.error();
+                if (std::getenv("SPT_CARTOON_DEBUG"))
+                    std::fprintf(stderr, "key frame %u: tolerance %.2f cost %.0f, %.2f cost %.0f\n", index,
+                                 k.fill.tolerance, frame_cost(k.frame), c->fill.tolerance, frame_cost(c->frame));
+                if (frame_cost(c->frame) < frame_cost(k.frame)) k = std::move(*c);
+            }  // else an asynchronous coarser painting is waited for, unused, when `coarser` goes
             palette = k.fill.palette;
             fo = opts.fill;
             fo.grids = {k.fill.grid ? k.fill.grid : uint8_t(4)};
