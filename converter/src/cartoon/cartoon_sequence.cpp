@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <future>
-#include <thread>
 
 #include <opencv2/imgproc.hpp>
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/inter_frame.hpp"
+#include "paint/worker_pool.hpp"
 #include "spt/concat.hpp"
 #include "spt/reader.hpp"
 #include "spt/writer.hpp"
@@ -119,7 +119,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     if (!writer) return writer.error();
 
     if (opts.progress) opts.progress->set_total(double(source.expected_frames()));
-    const bool parallel = (opts.paint.threads > 0 ? opts.paint.threads : int(std::thread::hardware_concurrency())) > 1;
+    const bool parallel = paint::resolve_threads(opts.paint.threads) > 1;
     std::vector<Stroke> live;
     std::vector<cv::Vec3b> palette;
     FillOptions fo = opts.fill;

@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <future>
-#include <thread>
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/frame_diff.hpp"
 #include "cartoon/shape_cost.hpp"
 #include "cartoon/stamp_keep.hpp"
+#include "paint/worker_pool.hpp"
 #include "spt/reader.hpp"
 
 namespace spt::cartoon {
@@ -129,7 +129,7 @@ bool same_plan(const Frame& a, const Frame& b) {
 Result<InterFrame> paint_inter_frame(const InterInput& in) {
     // The two plans are independent (each reads the inputs, the renderer's caches are thread
     // safe): with more than one thread the lenient one is made beside the strict one.
-    const bool parallel = (in.paint.threads > 0 ? in.paint.threads : int(std::thread::hardware_concurrency())) > 1;
+    const bool parallel = paint::resolve_threads(in.paint.threads) > 1;
     auto later = [&](auto fn) { return std::async(parallel ? std::launch::async : std::launch::deferred, fn); };
     auto lenient_plan = later([&] { return plan_variant(in, true); });
     auto strict = plan_variant(in, false);

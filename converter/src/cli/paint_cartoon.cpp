@@ -7,7 +7,6 @@
 #include <functional>
 #include <future>
 #include <string>
-#include <thread>
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/cartoon_sequence.hpp"
@@ -16,6 +15,7 @@
 #include "io/progress.hpp"
 #include "io/sequence.hpp"
 #include "io/trial_output.hpp"
+#include "paint/worker_pool.hpp"
 #include "io/template_loader.hpp"
 #include "spt/version.hpp"
 #include "spt/writer.hpp"
@@ -30,7 +30,7 @@ int fail(const std::string& msg) { return command_failed("paint", msg); }
 cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
     cartoon::FillOptions f;
     f.lines = o.lines;
-    f.threads = o.paint.threads > 0 ? o.paint.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    f.threads = paint::resolve_threads(o.paint.threads);
     if (o.outline_tolerance > 0) {
         f.trace.epsilon = o.outline_tolerance;
         f.search_tolerance = false;
@@ -180,7 +180,7 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
             t.bytes = out ? write_still(t.opts, setup, po, s, &*out) : Result<uint64_t>(out.error());
             return t;
         };
-        const bool parallel = (o.paint.threads > 0 ? o.paint.threads : int(std::thread::hardware_concurrency())) > 1;
+        const bool parallel = paint::resolve_threads(o.paint.threads) > 1;
         auto coarse = std::async(parallel ? std::launch::async : std::launch::deferred, attempt, 0.5);
         Trial trials[3] = {attempt(0), attempt(0.25), coarse.get()};
         size_t pick = 0;

@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <thread>
 
 #include "paint/orientation.hpp"
 #include "paint/rng.hpp"
@@ -213,8 +212,7 @@ PaintStats paint(const ImageView& model, Canvas& canvas, const Renderer& rendere
         return st;
 
     const int step = std::clamp(opts.color_step, 1, 32);
-    int threads = opts.threads > 0 ? opts.threads : int(std::thread::hardware_concurrency());
-    WorkerPool pool(std::max(1, threads));
+    WorkerPool pool(resolve_threads(opts.threads));
     Plane plane{W, H, model.rgb, canvas.rgb.data()};
     if (alpha) {
         plane.model_a = model.alpha;

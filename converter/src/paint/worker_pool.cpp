@@ -1,11 +1,17 @@
 #include "paint/worker_pool.hpp"
 
+#include <algorithm>
+
 namespace spt::paint {
 
 namespace {
 // Items are handed out in small chunks: enough to amortise the atomic, small enough to balance
 // candidates whose footprints are clipped differently.
 constexpr size_t kChunk = 4;
+}
+
+int resolve_threads(int requested) {
+    return requested > 0 ? requested : int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 WorkerPool::WorkerPool(int threads) {

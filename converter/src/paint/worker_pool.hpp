@@ -13,6 +13,10 @@
 
 namespace spt::paint {
 
+// The threads a --threads value asks for: itself when positive, else one per hardware thread
+// (at least 1).
+int resolve_threads(int requested);
+
 class WorkerPool {
 public:
     explicit WorkerPool(int threads);  // total threads including the caller; <= 1: inline
