@@ -14,9 +14,9 @@
 #include "io/image_io.hpp"
 #include "io/progress.hpp"
 #include "io/sequence.hpp"
+#include "io/template_loader.hpp"
 #include "io/trial_output.hpp"
 #include "paint/worker_pool.hpp"
-#include "io/template_loader.hpp"
 #include "spt/version.hpp"
 #include "spt/writer.hpp"
 #include "video/video_paint.hpp"
@@ -284,11 +284,7 @@ int paint_cartoon_sequence(const PaintCommandOptions& o, const Metadata& extra, 
         s.paint.target_psnr = *psnr;
     }
     s.metadata = sequence_metadata(o, s.paint.target_psnr);
-    for (const auto& [k, v] : extra) {
-        auto it = std::find_if(s.metadata.begin(), s.metadata.end(), [&](const auto& e) { return e.first == k; });
-        if (it != s.metadata.end()) it->second = v;
-        else s.metadata.emplace_back(k, v);
-    }
+    video::merge_metadata(s.metadata, extra);
     io::Progress progress(o.progress, "paint", 0);
     s.progress = &progress;
     cartoon::SequenceReport r;
@@ -319,7 +315,6 @@ int paint_cartoon(const PaintCommandOptions& o) {
     if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
         return paint_cartoon_sequence(o, {}, nullptr);
     if (!o.side_by_side.empty()) return fail("--style cartoon: --side-by-side is not supported; use --preview");
-    if (!o.rois.empty()) return fail("--style cartoon: regions of interest are not supported");
     return paint_cartoon_still(o);
 }
 

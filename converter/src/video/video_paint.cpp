@@ -35,6 +35,15 @@ std::string options_text(const VideoPaintOptions& o) {
 
 }  // namespace
 
+void merge_metadata(std::vector<std::pair<std::string, std::string>>& meta,
+                    const std::vector<std::pair<std::string, std::string>>& entries) {
+    for (const auto& [k, v] : entries) {
+        auto it = std::find_if(meta.begin(), meta.end(), [&](const auto& e) { return e.first == k; });
+        if (it != meta.end()) it->second = v;
+        else meta.emplace_back(k, v);
+    }
+}
+
 bool frames_consecutive(const std::string& frames) {
     Result<io::FrameRange> r = io::parse_frame_range(frames);
     return r && (r->empty() || (r->spans.size() == 1 && r->step(0) == 1));
@@ -112,11 +121,7 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
     };
     // SPEC.md 3.3: the source's own frame numbers, when the painted frames are consecutive.
     if (frame.number > 0 && frames_consecutive(opts.frames)) meta.emplace_back(kFirstFrameKey, std::to_string(frame.number));
-    for (const auto& [k, v] : opts.metadata) {
-        auto it = std::find_if(meta.begin(), meta.end(), [&](const auto& e) { return e.first == k; });
-        if (it != meta.end()) it->second = v;
-        else meta.emplace_back(k, v);
-    }
+    merge_metadata(meta, opts.metadata);
     VideoPaintOptions eo = opts;
     if (opts.target_bytes > 0) {
         // Per second: N / fps bytes a frame. Whole clip: N over the frames the source expects

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/progress.hpp"
@@ -141,6 +142,11 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress,
 // True when a --frames value selects consecutive frame numbers (one span, step 1, or all):
 // then a painting's frame 0 may name its source frame (metadata source.first_frame).
 bool frames_consecutive(const std::string& frames);
+
+// Sets each of `entries` in `meta`: replacing the value of an entry of the same key, else
+// appended (a farm shot's seed and place over a painter's own metadata).
+void merge_metadata(std::vector<std::pair<std::string, std::string>>& meta,
+                    const std::vector<std::pair<std::string, std::string>>& entries);
 
 // "24" -> 24/1, "30000/1001", "29.97" -> 30000/1001, "23.976" -> 24000/1001, "25.0" -> 25/1.
 Result<Rational> parse_fps(const std::string& text);
