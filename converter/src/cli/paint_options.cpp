@@ -143,7 +143,9 @@ void declare(Args& a, bool plan) {
         .option("target-bytes", "N[/s]", "search lambda (--style cartoon: the PSNR target) so that the file is at "
                                          "most N bytes (N/s: per second of a clip); reports where it landed")
         .option("outline-tolerance", "PX", "--style cartoon: how far (pixels) a polygon's outline may leave "
-                                           "the traced edge (default 0.35)")
+                                           "the traced edge. Default: with --target-psnr the coarsest of 1, 0.7 and 0.5 whose polygons reach "
+                                           "it; short of it, the smallest file of 0.25, 0.35 and 0.5 for a still, 0.35 or 0.5 "
+                                           "for a sequence's key frame; 0.35 otherwise")
         .flag("no-lines", "--style cartoon: trace thin regions as polygons only. By default a thin region "
                           "whose centreline curves are as close and smaller is drawn as lines: anti-aliased "
                           "curves with widths (format 1.4; Grease Pencil line strokes)")
