@@ -107,12 +107,15 @@ struct ReplayEnv {
     const Renderer* renderer = nullptr;
     StreamShape shape;
     const std::vector<Stroke>* live = nullptr;  // the live list before the frame (inter frames)
+    // Format 1.5: the strokes before the first stamp may be coded as lead strokes (SPEC.md 7.7.5).
+    bool allow_lead = false;
 };
 // Codes `f` with coding 2 when its strokes are the accepted candidates its ReplayInfo
-// describes; returns false (and leaves `out` unchanged) when they are not, so that the caller
-// falls back to coding 1.
+// describes, after lead strokes of other kinds when env.allow_lead; returns false (and leaves
+// `out` unchanged) when they are not, so that the caller falls back to coding 1. *used_lead
+// says whether the body has lead strokes (then the file must be format 1.5).
 bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_t>& out, BodySplit* split,
-                        FieldStats* stats);
+                        FieldStats* stats, bool* used_lead = nullptr);
 Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
                           BodySplit* split);
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "spt/coding.hpp"
+#include "spt/result.hpp"
 
 // The model functions below are forced inline so that a decoder's state stays in registers
 // across a whole stroke instead of going through memory on every bit (a store-to-load
@@ -230,6 +231,7 @@ inline int wrap8(int d) { return ((d + 128) & 255) - 128; }
 struct SyntaxError {
     bool bad = false;
     std::string msg;
+    Code code = Code::Corrupt;  // LimitExceeded where a valid value passes the decoder's limits
     void set(std::string m) { if (!bad) { bad = true; msg = std::move(m); } }
 };
 

@@ -1,6 +1,8 @@
 // Coding 2 frame bodies (SPEC.md 7.7): the coding-1 layout up to the stroke stream, then the
-// frame's generator seed and flags, then one range-coded stream of candidate regions, accepted
-// candidate gaps, orientations and colours predicted from the canvas painted so far.
+// frame's generator seed and flags, then one range-coded stream: the lead strokes coded as in
+// coding 1 (format 1.5), then candidate regions, accepted candidate gaps, orientations and
+// colours predicted from the canvas painted so far.
+#include <algorithm>
 #include <memory>
 
 #include "byte_io.hpp"
@@ -11,13 +13,17 @@ namespace spt::detail {
 namespace {
 
 constexpr uint8_t kRandomOrientation = 1;     // flags bit 0
+constexpr uint8_t kLeadStrokes = 2;           // flags bit 1 (format 1.5)
 constexpr uint8_t kMaxColorStep = 32;
 constexpr uint64_t kMaxEncoderScan = 1u << 24;  // candidates searched for one stroke
 
 // Matches the frame's strokes to the generator's candidates, set by set: each stroke takes the
 // first candidate after the previous one with its position, template (and orientation when
 // drawn). An earlier identical candidate gives the same stroke, so first match is exact.
-bool plan(const Frame& f, const Header& hd, uint32_t templates, std::vector<ReplaySet>& sets) {
+// The strokes before the first stamp are the lead (`lead`, coded as in coding 1) when
+// `allow_lead`; at least one stroke must be replayed.
+bool plan(const Frame& f, const Header& hd, uint32_t templates, bool allow_lead, size_t& lead,
+          std::vector<ReplaySet>& sets) {
     const ReplayInfo& ri = f.replay;
     const uint32_t S = uint32_t(hd.sets.size()), N = uint32_t(hd.orientations.size());
     if (!ri.present || f.added.empty() || templates == 0 || ri.color_step < 1 || ri.color_step > kMaxColorStep) return false;
@@ -27,8 +33,12 @@ bool plan(const Frame& f, const Header& hd, uint32_t templates, std::vector<Repl
         if (!ri.regions.empty()) sets[s].region = ri.regions[s];
         if (!replay::check_region(sets[s].region, hd.width, hd.height).empty()) return false;
     }
+    lead = 0;
+    while (lead < f.added.size() && f.added[lead].kind != StrokeKind::Stamp) ++lead;
+    if (lead == f.added.size() || (lead > 0 && !allow_lead)) return false;
     int last_set = 0;
-    for (const Stroke& st : f.added) {
+    for (size_t i = lead; i < f.added.size(); ++i) {
+        const Stroke& st = f.added[i];
         if (st.kind != StrokeKind::Stamp) return false;
         const StampStroke& t = st.stamp;
         if (t.set < last_set || t.set >= S || t.color.a != 255 || (t.x & 15) != 8 || (t.y & 15) != 8) return false;
@@ -38,7 +48,10 @@ bool plan(const Frame& f, const Header& hd, uint32_t templates, std::vector<Repl
     }
     for (uint32_t s = 0; s < S; ++s) {
         ReplaySet& rs = sets[s];
-        if (rs.strokes.empty()) continue;
+        if (rs.strokes.empty()) {
+            rs.region = ReplayRegion{};  // no candidate of it is used: the region in two flags
+            continue;
+        }
         const replay::CandidateDomain dom(hd.width, hd.height, rs.region);
         if (dom.size() == 0) return false;
         uint64_t next = 0;
@@ -87,11 +100,57 @@ Status start_canvas(const Frame& edits, FrameType type, const Header& hd, const 
     return renderer.render(canvas, moved);
 }
 
+// The lead strokes (SPEC.md 7.7.5, format 1.5): their count, then each as in coding 1 (7.4),
+// with that stream's contexts and predictors, drawn on `canvas` as soon as it is coded. Every
+// stroke is checked before it is drawn, and the lead's polygons and curves together stay within
+// the rendering work the limits allow the whole live list.
+template <class C>
+bool code_lead(C& c, ReplayCoderState& rs, std::vector<Stroke>& lead, uint64_t added, const StreamShape& shape,
+               const Limits& lim, const Renderer& renderer, Canvas& canvas, SyntaxError& err) {
+    c.set_field(Field::Count);
+    const uint64_t n = code_uint(c, rs.lead_count, lead.empty() ? 0 : lead.size() - 1) + 1;
+    if (n >= added) {
+        err.set(std::to_string(n) + " lead strokes leave none of the frame's " + std::to_string(added) + " to replay");
+        return false;
+    }
+    // A count is only a claim until its strokes decode: the decoder grows the list stroke by stroke.
+    if constexpr (C::kDecoding) lead.reserve(size_t(std::min<uint64_t>(n, 1u << 16)));
+    auto st = std::make_unique<StrokeCoderState>(shape);
+    uint64_t polygon_work = 0, curve_work = 0;
+    for (size_t i = 0; i < n; ++i) {
+        if constexpr (C::kDecoding) lead.emplace_back();
+        Stroke& s = lead[i];
+        if (!code_stroke(c, *st, s, lim, err)) {
+            err.msg = "lead stroke " + std::to_string(i) + ": " + err.msg;
+            return false;
+        }
+        if (auto ok = check_stroke(s, shape, lim, Code::Corrupt, "lead stroke " + std::to_string(i), 0); !ok) {
+            err.set(ok.error().message);
+            err.code = ok.error().code;
+            return false;
+        }
+        if (s.kind == StrokeKind::Polygon) polygon_work += polygon_render_work(s.polygon, shape.height);
+        if (s.kind == StrokeKind::Curve) curve_work += curve_render_work(s.curve, shape.width, shape.height);
+        if (polygon_work > lim.max_polygon_work || curve_work > lim.max_curve_work) {
+            err.set("the lead strokes need more rendering work than the limits allow");
+            err.code = Code::LimitExceeded;
+            return false;
+        }
+        if (auto ds = renderer.draw(canvas, s); !ds) { err.set(ds.error().message); return false; }
+    }
+    return true;
+}
+
 template <class C>
 bool code_sets(C& c, std::vector<ReplaySet>& sets, uint64_t seed, bool random_orient, int step, uint64_t added,
-               const Header& hd, uint32_t templates, const Renderer& renderer, Canvas& canvas, SyntaxError& err) {
+               const Header& hd, uint32_t templates, const Renderer& renderer, Canvas& canvas, SyntaxError& err,
+               std::vector<Stroke>* lead = nullptr, const StreamShape* shape = nullptr, const Limits* lim = nullptr) {
     ReplayCoderState st(uint32_t(hd.orientations.size()), renderer);
     uint64_t left = added;
+    if (lead) {
+        if (!code_lead(c, st, *lead, added, *shape, *lim, renderer, canvas, err)) return false;
+        left -= lead->size();
+    }
     for (uint32_t s = 0; s < sets.size(); ++s) {
         c.set_field(Field::Candidates);
         if (!code_region(c, st, sets[s].region, hd.width, hd.height, err)) return false;
@@ -106,10 +165,11 @@ bool code_sets(C& c, std::vector<ReplaySet>& sets, uint64_t seed, bool random_or
 }  // namespace
 
 bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_t>& out, BodySplit* split,
-                        FieldStats* stats) {
+                        FieldStats* stats, bool* used_lead) {
     const Header& hd = *env.header;
     std::vector<ReplaySet> sets;
-    if (!plan(f, hd, env.shape.templates, sets)) return false;
+    size_t lead = 0;
+    if (!plan(f, hd, env.shape.templates, env.allow_lead, lead, sets)) return false;
     Canvas canvas;
     if (!start_canvas(f, f.type, hd, *env.renderer, env.live, canvas)) return false;
 
@@ -117,15 +177,22 @@ bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_
     ByteSink head;
     const size_t motion_bytes = encode_body_prefix(f, head, &fs);
     head.u64(f.replay.seed);
-    head.u8(f.replay.random_orientation ? kRandomOrientation : 0);
+    head.u8(uint8_t((f.replay.random_orientation ? kRandomOrientation : 0) | (lead ? kLeadStrokes : 0)));
     head.u8(f.replay.color_step);
     fs[Field::Candidates] += 8.0 * 10;
     std::vector<uint8_t> stream;
     {
         RangeEncoder enc(stream, &fs);
         SyntaxError err;
-        if (!code_sets(enc, sets, f.replay.seed, f.replay.random_orientation, f.replay.color_step, f.added.size(), hd, env.shape.templates,
-                       *env.renderer, canvas, err))
+        std::vector<Stroke> lead_strokes(f.added.begin(), f.added.begin() + std::ptrdiff_t(lead));
+        // The lead is coded under format 1.5 (its kinds as a 1.2+ stream codes them).
+        StreamShape shape = env.shape;
+        shape.version_minor = std::max<uint32_t>(shape.version_minor, kLeadMinorVersion);
+        Limits unlimited;
+        unlimited.max_curve_points = unlimited.max_polygon_vertices = 0xFFFFFFFFu;
+        unlimited.max_polygon_work = unlimited.max_curve_work = ~uint64_t(0);
+        if (!code_sets(enc, sets, f.replay.seed, f.replay.random_orientation, f.replay.color_step, f.added.size(), hd,
+                       env.shape.templates, *env.renderer, canvas, err, lead ? &lead_strokes : nullptr, &shape, &unlimited))
             return false;
         enc.finish();
     }
@@ -134,6 +201,7 @@ bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_
     out.insert(out.end(), stream.begin(), stream.end());
     if (stats) stats->add(fs);
     if (split) *split = BodySplit::of(out.size() - start, motion_bytes, uint32_t(f.added.size()), uint32_t(f.removed.size()));
+    if (used_lead) *used_lead = lead > 0;
     return true;
 }
 
@@ -152,7 +220,11 @@ Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const Deco
     uint8_t flags = 0;
     SPT_TRY(c.u64(seed, "seed"));
     SPT_TRY(c.u8(flags, "replay flags"));
-    if (flags & ~kRandomOrientation) return c.error(Code::Unsupported, "reserved replay flags " + std::to_string(flags));
+    if (flags & ~(kRandomOrientation | kLeadStrokes)) return c.error(Code::Unsupported, "reserved replay flags " + std::to_string(flags));
+    const bool has_lead = (flags & kLeadStrokes) != 0;
+    if (has_lead && ctx.shape.version_minor < kLeadMinorVersion)
+        return c.error(Code::Corrupt, "lead strokes in a coding-2 frame (flags bit 1) need format 1.5, the file is 1." +
+                                          std::to_string(ctx.shape.version_minor));
     uint8_t step = 0;
     SPT_TRY(c.u8(step, "colour step"));
     if (step < 1 || step > kMaxColorStep) return c.error(Code::Corrupt, "colour step " + std::to_string(step) + " is not 1..32");
@@ -161,13 +233,14 @@ Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const Deco
     if (auto st = start_canvas(out, type, *ctx.header, *ctx.renderer, ctx.base, canvas); !st)
         return body_error(ctx, st.error().code, st.error().message);
     std::vector<ReplaySet> sets(ctx.header->sets.size());
+    std::vector<Stroke> lead;
     RangeDecoder dec(c.here(), c.left(), ctx.stats);
     SyntaxError err;
     if (!code_sets(dec, sets, seed, (flags & kRandomOrientation) != 0, step, added, *ctx.header, ctx.shape.templates,
-                   *ctx.renderer, canvas, err))
-        return body_error(ctx, Code::Corrupt, "replayed stroke stream: " + err.msg, c.pos());
+                   *ctx.renderer, canvas, err, has_lead ? &lead : nullptr, &ctx.shape, &ctx.limits))
+        return body_error(ctx, err.code, "replayed stroke stream: " + err.msg, c.pos());
     if (!dec.consumed_all()) return body_error(ctx, Code::Corrupt, "stroke stream has bytes after its last value", c.pos());
-    out.added.clear();
+    out.added = std::move(lead);
     out.added.reserve(added);
     for (auto& s : sets) out.added.insert(out.added.end(), s.strokes.begin(), s.strokes.end());
     out.replay.present = true;

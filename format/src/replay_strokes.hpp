@@ -22,6 +22,7 @@ struct ReplayCoderState {
     UIntModel rect_count, rect_xy, rect_wh, block_size;
     uint16_t mask[4];
     UIntModel count;
+    UIntModel lead_count;                               // format 1.5: strokes coded as in coding 1
     std::array<std::array<UIntModel, 6>, 4> gap;        // [set class][previous gap class]
     std::array<std::array<BitTree, 4>, 4> orient;       // [set class][edge strength]
     Res8Model color[3][4][4];                           // [G, R-G, B-G][set class][activity]

@@ -102,11 +102,30 @@ public:
         // Coding 2 when the frame's strokes replay from its generator, else coding 1 (SPEC.md 7.7).
         Coding coding = opts_.coding == Coding::Replay ? Coding::Range : opts_.coding;
         std::vector<uint8_t> body;
+        FieldStats fields;
+        detail::encode_frame_body(frame, coding, shape_, body, &split, &fields);
         if (opts_.coding == Coding::Replay && frame.replay.present) {
             detail::ReplayEnv env{&header_, renderer_.get(), shape_, &live_strokes_};
-            if (detail::encode_replay_body(frame, env, body, &split, &stats_.fields)) coding = Coding::Replay;
+            // Lead strokes need 1.5; raising the version in place keeps earlier frames' values
+            // unless a coding-1 frame of a pre-1.2 file held a curve (as for polygons).
+            env.allow_lead = header_.version_minor >= detail::kPolygonMinorVersion || !range_curves_;
+            bool lead = false;
+            std::vector<uint8_t> replayed;
+            detail::BodySplit replayed_split;
+            FieldStats replayed_fields;
+            // Coding 2 where it is smaller: a frame of a few stamps codes them in fewer bytes
+            // than its seed and candidate regions take.
+            if (detail::encode_replay_body(frame, env, replayed, &replayed_split, &replayed_fields, &lead) &&
+                replayed.size() < body.size()) {
+                coding = Coding::Replay;
+                body = std::move(replayed);
+                split = replayed_split;
+                fields = replayed_fields;
+                if (lead && header_.version_minor < kLeadMinorVersion)
+                    if (auto st = raise_version(kLeadMinorVersion); !st) return st;
+            }
         }
-        if (coding != Coding::Replay) detail::encode_frame_body(frame, coding, shape_, body, &split, &stats_.fields);
+        stats_.fields.add(fields);
         detail::encode_frame_header(chunk_payload, {frame.index, uint8_t(frame.type), uint8_t(coding)});
         chunk_payload.raw(body.data(), body.size());
         if (chunk_payload.size() > 0xFFFFFFFFull)
@@ -205,7 +224,11 @@ private:
             return make_error(Code::InvalidArgument, where + ": polygon strokes need format 1.2, and earlier frames were "
                                                               "range-coded as 1." + std::to_string(header_.version_minor) +
                                                               " with curves: create the writer with header.version_minor = 2");
-        header_.version_minor = detail::kPolygonMinorVersion;
+        return raise_version(detail::kPolygonMinorVersion);
+    }
+    // Rewrites HEAD in place with a newer version_minor (every frame so far decodes the same).
+    Status raise_version(uint16_t minor) {
+        header_.version_minor = minor;
         shape_.version_minor = header_.version_minor;
         Header h = header_;
         h.frame_count = kUnknownFrameCount;

@@ -103,8 +103,11 @@ class Position:
 
 
 class StrokeStream:
-    def __init__(self, data, header, template_count, what):
-        self.rc = RangeDecoder(data, what + " stroke stream")
+    """The coding-1 stroke stream (7.4). `rc` is given when the strokes are read from another
+    stream's coder: the lead strokes of a coding-2 frame (7.7.5)."""
+
+    def __init__(self, data, header, template_count, what, rc=None):
+        self.rc = rc if rc is not None else RangeDecoder(data, what + " stroke stream")
         self.what = what
         self.header = header
         W, H = header.width, header.height

@@ -1,13 +1,13 @@
-"""Decoder-replayed candidates, frame coding 2 (SPEC.md 7.7, format 1.1).
+"""Decoder-replayed candidates, frame coding 2 (SPEC.md 7.7, format 1.1; lead strokes 1.5).
 
 The decoder draws the painter's candidate strokes from a seeded generator, and the body codes
 which of them were kept, plus the orientations and colours, predicted from the canvas painted
 so far. So this module renders (render.py) while it decodes."""
 from .errors import fail
 from .range_coder import Context, RangeDecoder, Res8, Tree, UInt, bits, contexts
-from .ranged import BodyPrefix, decode_edits
+from .ranged import BodyPrefix, StrokeStream, decode_edits
 from .render import Canvas, draw, stamp_coverage
-from .strokes import Stamp, remove_and_move
+from .strokes import Stamp, check_stroke, remove_and_move
 
 MASK64 = (1 << 64) - 1
 
@@ -130,8 +130,10 @@ def decode_replay(body, key, header, templates, prev_live, what):
         base = remove_and_move(prev_live, removed, motion, what)
     r = prefix.rest
     seed, flags, step = r.u64("seed"), r.u8("flags"), r.u8("color_step")
-    if flags & ~1:
+    if flags & ~3:
         fail("Unsupported", f"{what}: reserved coding-2 flags")
+    if flags & 2 and header.version_minor < 5:
+        fail("Corrupt", f"{what}: lead strokes (coding-2 flags bit 1) in a file of version 1.{header.version_minor}")
     if not 1 <= step <= 32:
         fail("Corrupt", f"{what}: colour step {step} outside 1..32")
     if prefix.added_count < 1:
@@ -148,11 +150,21 @@ def decode_replay(body, key, header, templates, prev_live, what):
     ob = bits(n_orients - 1)
     rc = RangeDecoder(r.take(r.left(), "stroke stream"), what + " stroke stream")
     cx = {"use_rects": Context(), "use_blocks": Context(), "rect_count": UInt(), "rect_xy": UInt(),
-          "rect_wh": UInt(), "block_size": UInt(), "count": UInt(), "mask": contexts(4),
+          "rect_wh": UInt(), "block_size": UInt(), "count": UInt(), "mask": contexts(4), "lead_count": UInt(),
           "gap": [[UInt() for _ in range(6)] for _ in range(4)],
           "orient": [[Tree(ob) for _ in range(4)] for _ in range(4)],
           "color": [[[Res8() for _ in range(4)] for _ in range(4)] for _ in range(3)]}
     added = []
+    if flags & 2:  # 7.7.5 lead strokes, coded as in coding 1 and drawn at once
+        L = 1 + rc.uint(cx["lead_count"])
+        if L >= prefix.added_count:
+            fail("Corrupt", f"{what}: {L} lead strokes leave none of {prefix.added_count} to replay")
+        lead = StrokeStream(None, header, n_templates, what, rc=rc)
+        for _ in range(L):
+            stroke = lead.stroke()
+            check_stroke(stroke, header, n_templates, what)
+            added.append(stroke)
+            draw(canvas, header, templates, stroke)
     for s in range(len(header.sets)):
         sc = min(s, 3)  # the set class
         domain = decode_domain(rc, cx, W, H)

@@ -231,6 +231,9 @@ const char* color_encoding_name(ColorEncoding e);
 constexpr uint16_t kAlphaLinearMinorVersion = 3;
 // First format minor version with anti-aliased curves (HEAD flag curve_grid).
 constexpr uint16_t kCurveGridMinorVersion = 4;
+// First format minor version with lead strokes in frame coding 2 (curves and polygons coded
+// before the replayed stamps).
+constexpr uint16_t kLeadMinorVersion = 5;
 
 constexpr uint32_t kUnknownFrameCount = 0xFFFFFFFFu;
 
