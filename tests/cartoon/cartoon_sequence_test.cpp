@@ -197,7 +197,10 @@ TEST(CartoonSequence, ButterflyLinesAreAntiAliasedCurvesAndSaveBytes) {
     auto off = spt::Reader::open(dir.file("off.spt"));
     ASSERT_TRUE(on && off);
     EXPECT_TRUE((*on)->info().header.curve_grid);
-    EXPECT_EQ((*on)->info().header.version_minor, spt::kCurveGridMinorVersion);
+    // Lines need 1.4, and the stamps replayed after them 1.5 (SPEC.md 7.7.5).
+    EXPECT_EQ((*on)->info().header.version_minor, spt::kLeadMinorVersion);
+    ASSERT_EQ((*on)->frames().size(), 2u);
+    for (const auto& e : (*on)->frames()) EXPECT_EQ(e.coding, spt::Coding::Replay) << "frame " << e.index;
     EXPECT_FALSE((*off)->info().header.curve_grid);
     auto live = (*on)->strokes_at(0);
     ASSERT_TRUE(live);

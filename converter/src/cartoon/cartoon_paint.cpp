@@ -79,6 +79,7 @@ CartoonStats paint_cartoon(const paint::ImageView& model, Canvas& canvas, const 
     if (scaled.target_psnr > 0) scaled.lambda *= kResidualLambdaScale;
     std::vector<Stroke> stamps;
     st.stamps = paint::paint(model, canvas, renderer, setup, scaled, stamps, &region);
+    if (!stamps.empty()) st.replay = paint::replay_info(setup, scaled, model.width, model.height, &region);
     out.insert(out.end(), stamps.begin(), stamps.end());
     return st;
 }

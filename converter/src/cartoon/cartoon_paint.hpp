@@ -29,6 +29,9 @@ struct CartoonStats {
     uint8_t grid = 0;
     double fill_psnr = 0;        // after the polygons
     paint::PaintStats stamps;    // the residual painting (stamps.psnr: the final PSNR)
+    // How the stamps were drawn (frame coding 2 codes them as replayed candidates after the
+    // polygons and lines, SPEC.md 7.7.5); not present without stamps.
+    ReplayInfo replay;
 };
 
 // Paints `model` onto `canvas` (the background): appends the polygons then the stamps to

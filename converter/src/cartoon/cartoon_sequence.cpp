@@ -68,6 +68,7 @@ Result<KeyFrame> paint_key(const cv::Mat& rgb, const paint::ImageView& model, co
             std::vector<Stroke> stamps;
             paint::paint(model, k.canvas, renderer, setup, po, stamps, &region);
             k.stamps = stamps.size();
+            if (!stamps.empty()) f.replay = paint::replay_info(setup, po, model.width, model.height, &region);
             f.added.insert(f.added.end(), stamps.begin(), stamps.end());
         }
     }
@@ -113,7 +114,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     if (frame.number > 0 && video::frames_consecutive(opts.frames))
         info.metadata.emplace_back(kFirstFrameKey, std::to_string(frame.number));
     WriterOptions wo;
-    wo.coding = opts.stored ? Coding::Stored : Coding::Range;
+    wo.coding = opts.stored ? Coding::Stored : Coding::Replay;  // stamps after polygons: SPEC.md 7.7.5
     wo.atomic_rename = opts.atomic_rename;
     auto writer = Writer::create(opts.output, info, wo);
     if (!writer) return writer.error();

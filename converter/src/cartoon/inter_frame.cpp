@@ -114,6 +114,8 @@ void paint_stamps(const InterInput& in, InterFrame& r) {
             std::vector<Stroke> stamps;
             paint::paint(in.model, r.canvas, *in.renderer, *in.setup, po, stamps, &region);
             r.stamps = stamps.size();
+            // The stamps replay after the added polygons (SPEC.md 7.7.5).
+            if (!stamps.empty()) f.replay = paint::replay_info(*in.setup, po, in.model.width, in.model.height, &region);
             f.added.insert(f.added.end(), stamps.begin(), stamps.end());
         }
     }

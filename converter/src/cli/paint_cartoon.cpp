@@ -106,8 +106,9 @@ Result<uint64_t> write_still(const PaintCommandOptions& o, const paint::PaintSet
                      {"painter.seed", std::to_string(o.paint.seed)},
                      {"painter.options", meta.canonical()}};
     WriterOptions wo;
-    // Frames holding polygons are range coded (coding 2 replays stamps only, SPEC.md 7.7).
-    wo.coding = o.stored ? Coding::Stored : Coding::Range;
+    // The polygons and lines lead a coding-2 frame, and the stamps are coded as the candidates
+    // they were drawn from (SPEC.md 7.7.5, format 1.5); without stamps the frame is coding 1.
+    wo.coding = o.stored ? Coding::Stored : Coding::Replay;
     wo.atomic_rename = trial == nullptr;  // the trial file is never linked anywhere
     const std::string& path = trial ? trial->path() : o.output;
     auto explain = [&](Error e) {
@@ -118,6 +119,7 @@ Result<uint64_t> write_still(const PaintCommandOptions& o, const paint::PaintSet
     if (!writer) return explain(writer.error());
     Frame frame;
     frame.added = p.strokes;
+    frame.replay = p.st.replay;
     Status s = (*writer)->append(frame);
     if (s) s = (*writer)->finish();
     if (!s) {
