@@ -11,6 +11,64 @@ namespace spt::cartoon {
 
 namespace {
 
+// Douglas-Peucker between contour points a and b (indices modulo the contour's length, a < b),
+// measured on `pts` (the smoothed contour): the indices it keeps, in order. Iterative: a long
+// contour could otherwise recurse once per point.
+std::vector<size_t> simplify_range(const std::vector<cv::Point2f>& pts, size_t a, size_t b, double eps) {
+    const size_t m = pts.size();
+    std::vector<size_t> keep;
+    std::vector<std::pair<size_t, size_t>> todo{{a, b}};
+    while (!todo.empty()) {
+        const auto [lo, hi] = todo.back();
+        todo.pop_back();
+        const cv::Point2f A = pts[lo % m], d = pts[hi % m] - A;
+        const double len = std::hypot(d.x, d.y);
+        double best = -1;
+        size_t at = 0;
+        for (size_t i = lo + 1; i < hi; ++i) {
+            const cv::Point2f q = pts[i % m] - A;
+            const double dist = len > 1e-9 ? std::fabs(double(d.x) * q.y - double(d.y) * q.x) / len : std::hypot(q.x, q.y);
+            if (dist > best) { best = dist; at = i; }
+        }
+        if (best <= eps) continue;
+        keep.push_back(at);
+        todo.push_back({lo, at});
+        todo.push_back({at, hi});
+    }
+    std::sort(keep.begin(), keep.end());
+    for (size_t& i : keep) i %= m;
+    return keep;
+}
+
+// The points of closed contour `c` that Douglas-Peucker keeps (tolerance `eps`) on the contour
+// averaged over +-r points, so that the fit (fit_outline.hpp) still sees the true contour.
+std::vector<cv::Point> simplify_smoothed(const std::vector<cv::Point>& c, double eps, int r) {
+    const size_t m = c.size();
+    std::vector<cv::Point2f> avg(m);
+    for (size_t i = 0; i < m; ++i) {
+        double sx = 0, sy = 0;
+        for (int t = -r; t <= r; ++t) {
+            const cv::Point& q = c[(i + m + size_t(int64_t(m) + t)) % m];
+            sx += q.x;
+            sy += q.y;
+        }
+        avg[i] = cv::Point2f(float(sx / (2 * r + 1)), float(sy / (2 * r + 1)));
+    }
+    // Split at the point farthest from the first, as approxPolyDP does for closed curves.
+    size_t far = 0;
+    double far_d = -1;
+    for (size_t i = 0; i < m; ++i)
+        if (const double dd = std::hypot(avg[i].x - avg[0].x, avg[i].y - avg[0].y); dd > far_d) { far_d = dd; far = i; }
+    std::vector<size_t> keep{0};
+    for (size_t i : simplify_range(avg, 0, far, eps)) keep.push_back(i);
+    keep.push_back(far);
+    for (size_t i : simplify_range(avg, far, m, eps)) keep.push_back(i);
+    std::vector<cv::Point> out;
+    out.reserve(keep.size());
+    for (size_t i : keep) out.push_back(c[i]);
+    return out;
+}
+
 // Coverage of colour `a` in a pixel `p` blended from `a` and `b`: the projection of p - b on
 // a - b, clamped to 0..1; -1 when the two colours are too close to tell.
 float blend_share(const cv::Vec3b& p, const cv::Vec3b& a, const cv::Vec3b& b) {
@@ -109,7 +167,9 @@ std::vector<PolygonStroke> trace_region(const cv::Mat& rgb, const Regions& regs,
     const double unit = 16.0 / k, step = opts.lattice;
     auto simplify = [&](const std::vector<cv::Point>& c) {
         std::vector<cv::Point> simple;
-        cv::approxPolyDP(c, simple, opts.epsilon * k, true);
+        const int r = int(std::lround(opts.smooth * k));
+        if (r > 0 && c.size() > size_t(4 * r + 4)) simple = simplify_smoothed(c, opts.epsilon * k, r);
+        else cv::approxPolyDP(c, simple, opts.epsilon * k, true);
         if (simple.size() < 3) return std::vector<cv::Point2f>();
         return opts.fit ? fit_outline(c, simple, bin) : std::vector<cv::Point2f>(simple.begin(), simple.end());
     };

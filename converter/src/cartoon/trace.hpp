@@ -20,6 +20,9 @@ struct TraceOptions {
     double min_area = 1.0;     // outlines enclosing less than this (pixels) are dropped
     bool fit = true;           // sides refitted to the contour (fit_outline.hpp)
     int lattice = 2;           // vertices on a lattice of this many Q4 units (4: 1/4 pixel)
+    // The contour is averaged over +-smooth pixels before it is simplified (0: not): a blurred
+    // or noisy edge's sub-pixel contour zigzags, and each zigzag past the tolerance is a vertex.
+    double smooth = 0;
 };
 
 // The polygons (colour and vertices; supersample 0) of region `index` of `regs`.

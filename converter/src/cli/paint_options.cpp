@@ -146,6 +146,10 @@ void declare(Args& a, bool plan) {
                                            "the traced edge. Default: with --target-psnr the coarsest of 1, 0.7 and 0.5 whose polygons reach "
                                            "it; short of it, the smallest file of 0.25, 0.35 and 0.5 for a still, 0.35 or 0.5 "
                                            "for a sequence's key frame; 0.35 otherwise")
+        .option("outline-smooth", "PX", "--style cartoon: average a traced edge over +-PX pixels (0..2) before "
+                                        "its outline is simplified: a blurred or noisy edge takes fewer vertices. "
+                                        "Default: 0, except that a still short of --target-psnr smooths its "
+                                        "0.25 and 0.5 px outline trials by as much as their tolerance")
         .flag("no-lines", "--style cartoon: trace thin regions as polygons only. By default a thin region "
                           "whose centreline curves are as close and smaller is drawn as lines: anti-aliased "
                           "curves with widths (format 1.4; Grease Pencil line strokes)")
@@ -286,9 +290,11 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
     }
     if (a.has("outline-tolerance") && !parse_double(v("outline-tolerance"), 0.01, 100, o.outline_tolerance))
         return bad("--outline-tolerance: expected 0.01..100 pixels, got '" + v("outline-tolerance") + "'");
+    if (a.has("outline-smooth") && !parse_double(v("outline-smooth"), 0, 2, o.outline_smooth))
+        return bad("--outline-smooth: expected 0..2 pixels, got '" + v("outline-smooth") + "'");
     o.lines = !a.has("no-lines");
     // The cartoon painter's options do nothing for the default painter: said, not ignored.
-    for (const char* f : {"outline-tolerance", "no-lines"})
+    for (const char* f : {"outline-tolerance", "outline-smooth", "no-lines"})
         if (a.has(f) && o.style != "cartoon") return bad(std::string("--") + f + " applies to --style cartoon only");
     long n = 0;
     if (a.has("seed") && !parse_u64(v("seed"), o.paint.seed))
@@ -416,7 +422,10 @@ std::string PaintCommandOptions::canonical() const {
       << " orient=" << orient_name(paint.orient) << " templates=" << (templates_dir.empty() ? "builtin" : "custom")
       << " background=" << int(background.r) << ',' << int(background.g) << ',' << int(background.b)
       << " rois=" << rois.size();
-    if (style != "painterly") s << " style=" << style << " outline-tolerance=" << outline_tolerance << " lines=" << (lines ? 1 : 0);  // painterly files keep their bytes
+    if (style != "painterly") {  // painterly files keep their bytes
+        s << " style=" << style << " outline-tolerance=" << outline_tolerance << " lines=" << (lines ? 1 : 0);
+        if (outline_smooth >= 0) s << " outline-smooth=" << outline_smooth;  // files without it keep theirs
+    }
     // Only when not the defaults, so that the files of earlier versions keep their bytes.
     if (color_encoding != "auto") s << " color-encoding=" << color_encoding;
     if (alpha != "auto") s << " alpha=" << alpha;
