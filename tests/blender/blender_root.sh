@@ -67,17 +67,24 @@ install_spt() {
     case "$(basename "$lib")" in
       libc.so*|libm.so*|libpthread.so*|libdl.so*|librt.so*|ld-linux*|libresolv.so*) continue ;;
     esac
-    cmp -s "$lib" "$dest/lib/$(basename "$lib")" 2>/dev/null || cp -L "$lib" "$dest/lib/"
+    # Copied beside and renamed into place: tests running in parallel may have the old one
+    # mapped, and overwriting it in place would change it under them.
+    target="$dest/lib/$(basename "$lib")"
+    cmp -s "$lib" "$target" 2>/dev/null || { cp -L "$lib" "$target.new.$$" && mv -f "$target.new.$$" "$target"; }
   done < <(ldd "$spt" | awk '/=> \// {print $3}')
   if ! cmp -s "$spt" "$dest/spt" 2>/dev/null; then
-    cp "$spt" "$dest/spt.new" && mv -f "$dest/spt.new" "$dest/spt"
+    cp "$spt" "$dest/spt.new.$$" && mv -f "$dest/spt.new.$$" "$dest/spt"
   fi
-  cat > "$root/usr/local/bin/spt" <<'EOF'
+  # The wrapper too is written beside and renamed: a test running it in parallel makes writing
+  # it in place fail ("Text file busy").
+  wrapper="$root/usr/local/bin/spt"
+  cat > "$wrapper.new.$$" <<'EOF'
 #!/bin/sh
 # The host-built spt with the host's libraries beside it (tests/blender/blender_root.sh).
 LD_LIBRARY_PATH=/opt/spt/lib exec /opt/spt/spt "$@"
 EOF
-  chmod +x "$root/usr/local/bin/spt"
+  chmod +x "$wrapper.new.$$"
+  if cmp -s "$wrapper.new.$$" "$wrapper" 2>/dev/null; then rm -f "$wrapper.new.$$"; else mv -f "$wrapper.new.$$" "$wrapper"; fi
   chroot "$root" /usr/local/bin/spt --version >/dev/null || die "spt does not run inside $root"
 }
 
