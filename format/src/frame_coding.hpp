@@ -112,10 +112,11 @@ struct ReplayEnv {
 };
 // Codes `f` with coding 2 when its strokes are the accepted candidates its ReplayInfo
 // describes, after lead strokes of other kinds when env.allow_lead; returns false (and leaves
-// `out` unchanged) when they are not, so that the caller falls back to coding 1. *used_lead
-// says whether the body has lead strokes (then the file must be format 1.5).
+// `out` unchanged) when they are not, so that the caller falls back to coding 1. With
+// env.allow_lead, sets drawing from one region code it once (format 1.5 files only).
+// *needs_lead_version says whether the body uses a 1.5 feature (lead strokes, one region).
 bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_t>& out, BodySplit* split,
-                        FieldStats* stats, bool* used_lead = nullptr);
+                        FieldStats* stats, bool* needs_lead_version = nullptr);
 Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const DecodeContext& ctx, Frame& out,
                           BodySplit* split);
 

@@ -14,6 +14,7 @@ namespace {
 
 constexpr uint8_t kRandomOrientation = 1;     // flags bit 0
 constexpr uint8_t kLeadStrokes = 2;           // flags bit 1 (format 1.5)
+constexpr uint8_t kOneRegion = 4;             // flags bit 2 (format 1.5): one region for every set
 constexpr uint8_t kMaxColorStep = 32;
 constexpr uint64_t kMaxEncoderScan = 1u << 24;  // candidates searched for one stroke
 
@@ -141,10 +142,22 @@ bool code_lead(C& c, ReplayCoderState& rs, std::vector<Stroke>& lead, uint64_t a
     return true;
 }
 
+// Whether every set that has strokes draws from one region (then coded once, flags bit 2).
+bool one_region(const std::vector<ReplaySet>& sets) {
+    const ReplaySet* first = nullptr;
+    for (const ReplaySet& s : sets) {
+        if (s.strokes.empty()) continue;
+        if (!first) first = &s;
+        else if (!(s.region == first->region)) return false;
+    }
+    return first != nullptr;
+}
+
 template <class C>
 bool code_sets(C& c, std::vector<ReplaySet>& sets, uint64_t seed, bool random_orient, int step, uint64_t added,
                const Header& hd, uint32_t templates, const Renderer& renderer, Canvas& canvas, SyntaxError& err,
-               std::vector<Stroke>* lead = nullptr, const StreamShape* shape = nullptr, const Limits* lim = nullptr) {
+               std::vector<Stroke>* lead = nullptr, const StreamShape* shape = nullptr, const Limits* lim = nullptr,
+               bool shared_region = false) {
     ReplayCoderState st(uint32_t(hd.orientations.size()), renderer);
     uint64_t left = added;
     if (lead) {
@@ -153,7 +166,8 @@ bool code_sets(C& c, std::vector<ReplaySet>& sets, uint64_t seed, bool random_or
     }
     for (uint32_t s = 0; s < sets.size(); ++s) {
         c.set_field(Field::Candidates);
-        if (!code_region(c, st, sets[s].region, hd.width, hd.height, err)) return false;
+        if (shared_region && s > 0) sets[s].region = sets[0].region;
+        else if (!code_region(c, st, sets[s].region, hd.width, hd.height, err)) return false;
         if (!code_replay_set(c, st, sets[s], s, seed, random_orient, step, left, hd, templates, renderer, canvas, err))
             return false;
         left -= sets[s].strokes.size();
@@ -165,11 +179,20 @@ bool code_sets(C& c, std::vector<ReplaySet>& sets, uint64_t seed, bool random_or
 }  // namespace
 
 bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_t>& out, BodySplit* split,
-                        FieldStats* stats, bool* used_lead) {
+                        FieldStats* stats, bool* needs_lead_version) {
     const Header& hd = *env.header;
     std::vector<ReplaySet> sets;
     size_t lead = 0;
     if (!plan(f, hd, env.shape.templates, env.allow_lead, lead, sets)) return false;
+    // One region for all sets in a file that is (or this frame makes) 1.5; files that are not
+    // keep their bytes.
+    const bool shared = env.allow_lead && (lead > 0 || env.shape.version_minor >= kLeadMinorVersion) && one_region(sets);
+    if (shared) {
+        const ReplaySet* first = nullptr;
+        for (const ReplaySet& s : sets) if (!first && !s.strokes.empty()) first = &s;
+        const ReplayRegion region = first->region;
+        for (ReplaySet& s : sets) s.region = region;
+    }
     Canvas canvas;
     if (!start_canvas(f, f.type, hd, *env.renderer, env.live, canvas)) return false;
 
@@ -177,7 +200,8 @@ bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_
     ByteSink head;
     const size_t motion_bytes = encode_body_prefix(f, head, &fs);
     head.u64(f.replay.seed);
-    head.u8(uint8_t((f.replay.random_orientation ? kRandomOrientation : 0) | (lead ? kLeadStrokes : 0)));
+    head.u8(uint8_t((f.replay.random_orientation ? kRandomOrientation : 0) | (lead ? kLeadStrokes : 0) |
+                    (shared ? kOneRegion : 0)));
     head.u8(f.replay.color_step);
     fs[Field::Candidates] += 8.0 * 10;
     std::vector<uint8_t> stream;
@@ -192,7 +216,8 @@ bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_
         unlimited.max_curve_points = unlimited.max_polygon_vertices = 0xFFFFFFFFu;
         unlimited.max_polygon_work = unlimited.max_curve_work = ~uint64_t(0);
         if (!code_sets(enc, sets, f.replay.seed, f.replay.random_orientation, f.replay.color_step, f.added.size(), hd,
-                       env.shape.templates, *env.renderer, canvas, err, lead ? &lead_strokes : nullptr, &shape, &unlimited))
+                       env.shape.templates, *env.renderer, canvas, err, lead ? &lead_strokes : nullptr, &shape, &unlimited,
+                       shared))
             return false;
         enc.finish();
     }
@@ -201,7 +226,7 @@ bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_
     out.insert(out.end(), stream.begin(), stream.end());
     if (stats) stats->add(fs);
     if (split) *split = BodySplit::of(out.size() - start, motion_bytes, uint32_t(f.added.size()), uint32_t(f.removed.size()));
-    if (used_lead) *used_lead = lead > 0;
+    if (needs_lead_version) *needs_lead_version = lead > 0 || shared;
     return true;
 }
 
@@ -220,11 +245,12 @@ Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const Deco
     uint8_t flags = 0;
     SPT_TRY(c.u64(seed, "seed"));
     SPT_TRY(c.u8(flags, "replay flags"));
-    if (flags & ~(kRandomOrientation | kLeadStrokes)) return c.error(Code::Unsupported, "reserved replay flags " + std::to_string(flags));
-    const bool has_lead = (flags & kLeadStrokes) != 0;
-    if (has_lead && ctx.shape.version_minor < kLeadMinorVersion)
-        return c.error(Code::Corrupt, "lead strokes in a coding-2 frame (flags bit 1) need format 1.5, the file is 1." +
-                                          std::to_string(ctx.shape.version_minor));
+    if (flags & ~(kRandomOrientation | kLeadStrokes | kOneRegion))
+        return c.error(Code::Unsupported, "reserved replay flags " + std::to_string(flags));
+    const bool has_lead = (flags & kLeadStrokes) != 0, shared = (flags & kOneRegion) != 0;
+    if ((has_lead || shared) && ctx.shape.version_minor < kLeadMinorVersion)
+        return c.error(Code::Corrupt, std::string(has_lead ? "lead strokes (coding-2 flags bit 1)" : "one region for every set (coding-2 flags bit 2)") +
+                                          " need format 1.5, the file is 1." + std::to_string(ctx.shape.version_minor));
     uint8_t step = 0;
     SPT_TRY(c.u8(step, "colour step"));
     if (step < 1 || step > kMaxColorStep) return c.error(Code::Corrupt, "colour step " + std::to_string(step) + " is not 1..32");
@@ -237,7 +263,7 @@ Status decode_replay_body(FrameType type, const uint8_t* p, size_t n, const Deco
     RangeDecoder dec(c.here(), c.left(), ctx.stats);
     SyntaxError err;
     if (!code_sets(dec, sets, seed, (flags & kRandomOrientation) != 0, step, added, *ctx.header, ctx.shape.templates,
-                   *ctx.renderer, canvas, err, has_lead ? &lead : nullptr, &ctx.shape, &ctx.limits))
+                   *ctx.renderer, canvas, err, has_lead ? &lead : nullptr, &ctx.shape, &ctx.limits, shared))
         return body_error(ctx, err.code, "replayed stroke stream: " + err.msg, c.pos());
     if (!dec.consumed_all()) return body_error(ctx, Code::Corrupt, "stroke stream has bytes after its last value", c.pos());
     out.added = std::move(lead);

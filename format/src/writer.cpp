@@ -106,22 +106,23 @@ public:
         detail::encode_frame_body(frame, coding, shape_, body, &split, &fields);
         if (opts_.coding == Coding::Replay && frame.replay.present) {
             detail::ReplayEnv env{&header_, renderer_.get(), shape_, &live_strokes_};
-            // Lead strokes need 1.5; raising the version in place keeps earlier frames' values
-            // unless a coding-1 frame of a pre-1.2 file held a curve (as for polygons).
+            // Lead strokes and one region for all sets need 1.5; raising the version in place
+            // keeps earlier frames' values unless a coding-1 frame of a pre-1.2 file held a curve
+            // (as for polygons).
             env.allow_lead = header_.version_minor >= detail::kPolygonMinorVersion || !range_curves_;
-            bool lead = false;
+            bool needs_1_5 = false;
             std::vector<uint8_t> replayed;
             detail::BodySplit replayed_split;
             FieldStats replayed_fields;
             // Coding 2 where it is smaller: a frame of a few stamps codes them in fewer bytes
             // than its seed and candidate regions take.
-            if (detail::encode_replay_body(frame, env, replayed, &replayed_split, &replayed_fields, &lead) &&
+            if (detail::encode_replay_body(frame, env, replayed, &replayed_split, &replayed_fields, &needs_1_5) &&
                 replayed.size() < body.size()) {
                 coding = Coding::Replay;
                 body = std::move(replayed);
                 split = replayed_split;
                 fields = replayed_fields;
-                if (lead && header_.version_minor < kLeadMinorVersion)
+                if (needs_1_5 && header_.version_minor < kLeadMinorVersion)
                     if (auto st = raise_version(kLeadMinorVersion); !st) return st;
             }
         }

@@ -164,8 +164,9 @@ Case replay_case() {
 // coded as in coding 1, and whose stamps replay on the canvas they leave.
 Case replay_lead_case() {
     Case c{"replay_lead", "frame coding 2 with lead strokes (format 1.5): a key frame of a polygon, an anti-aliased "
-                          "curve and an affine stroke, then replayed stamps predicted from the canvas they leave; an "
-                          "inter frame with removals, motion, a lead polygon and replayed stamps", {}};
+                          "curve and an affine stroke, then replayed stamps predicted from the canvas they leave, "
+                          "both sets drawing from one region (coded once); an inter frame with removals, motion, a "
+                          "lead polygon and replayed stamps, each set with its own block mask", {}};
     c.replay = true;
     Header hd = header(48, 32, 2, 8);
     hd.sets = {{8, 4}, {4, 2}};
@@ -216,6 +217,10 @@ Case replay_lead_case() {
                      0, 0, 1, 1, 1, 0,
                      0, 0, 0, 0, 1, 1};
     i.replay.regions.assign(2, blocks);
+    i.replay.regions[1].blocks = {1, 1, 1, 1, 0, 0,
+                                  1, 1, 1, 1, 0, 0,
+                                  0, 0, 1, 1, 1, 1,
+                                  0, 0, 0, 1, 1, 1};
     std::vector<Stroke> live = k.added;
     Frame edits = i;
     edits.added.clear();

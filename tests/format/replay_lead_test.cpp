@@ -42,7 +42,7 @@ Stroke polygon(int32_t x, int32_t y, Rgba8 c) {
 std::vector<Stroke> stamps(const StreamInfo& info, const ReplayInfo& ri, int n) {
     std::vector<Stroke> out;
     for (uint32_t s = 0; s < info.header.sets.size(); ++s) {
-        const replay::CandidateDomain d(info.header.width, info.header.height, ReplayRegion{});
+        const replay::CandidateDomain d(info.header.width, info.header.height, ri.regions.empty() ? ReplayRegion{} : ri.regions[s]);
         for (int i = 0; i < n; ++i) {
             const auto c = replay::candidate(ri.seed, s, uint64_t(2 * i), d, 1, 8);
             StampStroke t;
@@ -145,6 +145,59 @@ TEST(ReplayLead, PolygonsCurvesAndAffinesLeadTheReplayedStamps) {
     EXPECT_LT(std::filesystem::file_size(path), std::filesystem::file_size(plain));
     std::filesystem::remove(path);
     std::filesystem::remove(plain);
+}
+
+// The flags byte of a coding-2 key frame body: after added_count (a varint) and the seed.
+uint8_t key_frame_flags(const std::vector<uint8_t>& file, const FrameEntry& e) {
+    size_t p = size_t(e.offset) + 8 + 8;  // chunk length and type, frame header
+    while (file[p] & 0x80) ++p;
+    return file[p + 1 + 8];
+}
+
+// Sets drawing from one region code it once (flags bit 2) in a 1.5 file; sets with regions of
+// their own code each; a file that is not 1.5 never uses the flag (its bytes stay).
+TEST(ReplayLead, OneRegionForEverySetIsCodedOnce) {
+    const StreamInfo info = lead_info();
+    ReplayRegion blocks;
+    blocks.use_blocks = true;
+    blocks.block_size = 8;
+    blocks.blocks = {1, 1, 0, 0, 0,  1, 1, 1, 0, 0,  0, 0, 1, 1, 0,  0, 0, 0, 1, 1};
+    ReplayRegion other = blocks;
+    other.blocks[0] = 0;
+    other.blocks[4] = 1;
+    auto frame = [&](bool lead, const ReplayRegion& r1) {
+        Frame f;
+        f.replay.present = true;
+        f.replay.seed = 11;
+        f.replay.regions = {blocks, r1};
+        if (lead) f.added.push_back(polygon(16 * 4, 16 * 3, {10, 200, 90, 255}));
+        for (const Stroke& s : stamps(info, f.replay, 24)) f.added.push_back(s);
+        return f;
+    };
+    struct Case {
+        bool lead;
+        const ReplayRegion* r1;
+        uint16_t version;
+        bool one_region;
+    } cases[] = {{true, &blocks, kLeadMinorVersion, true},
+                 {true, &other, kLeadMinorVersion, false},
+                 {false, &blocks, 1, false}};  // no lead: a 1.1 file, which never sets the flag
+    for (const Case& c : cases) {
+        const std::string path = temp_path("one_region");
+        const Frame f = frame(c.lead, *c.r1);
+        ASSERT_TRUE(write(path, info, {f}));
+        auto r = Reader::open(path);
+        ASSERT_TRUE(r) << r.error().message;
+        EXPECT_EQ((*r)->info().header.version_minor, c.version);
+        const FrameEntry& e = (*r)->frames()[0];
+        ASSERT_EQ(e.coding, Coding::Replay);
+        EXPECT_EQ((key_frame_flags(slurp(path), e) & 4) != 0, c.one_region) << "lead " << c.lead;
+        auto got = (*r)->read_frame(0);
+        ASSERT_TRUE(got) << got.error().message;
+        EXPECT_EQ(got->added, f.added);
+        EXPECT_EQ(got->replay.regions, f.replay.regions);
+        std::filesystem::remove(path);
+    }
 }
 
 TEST(ReplayLead, WriterFallsBackWhereALeadCannotOrShouldNotBeUsed) {

@@ -130,10 +130,10 @@ def decode_replay(body, key, header, templates, prev_live, what):
         base = remove_and_move(prev_live, removed, motion, what)
     r = prefix.rest
     seed, flags, step = r.u64("seed"), r.u8("flags"), r.u8("color_step")
-    if flags & ~3:
+    if flags & ~7:
         fail("Unsupported", f"{what}: reserved coding-2 flags")
-    if flags & 2 and header.version_minor < 5:
-        fail("Corrupt", f"{what}: lead strokes (coding-2 flags bit 1) in a file of version 1.{header.version_minor}")
+    if flags & 6 and header.version_minor < 5:
+        fail("Corrupt", f"{what}: coding-2 flags bit 1 or 2 in a file of version 1.{header.version_minor}")
     if not 1 <= step <= 32:
         fail("Corrupt", f"{what}: colour step {step} outside 1..32")
     if prefix.added_count < 1:
@@ -165,9 +165,11 @@ def decode_replay(body, key, header, templates, prev_live, what):
             check_stroke(stroke, header, n_templates, what)
             added.append(stroke)
             draw(canvas, header, templates, stroke)
+    domain = None
     for s in range(len(header.sets)):
         sc = min(s, 3)  # the set class
-        domain = decode_domain(rc, cx, W, H)
+        if s == 0 or not flags & 4:  # flags bit 2: set 0's region is every set's
+            domain = decode_domain(rc, cx, W, H)
         K = rc.uint(cx["count"])
         if len(added) + K > prefix.added_count:
             fail("Corrupt", f"{what}: set {s} has more strokes than added_count")
