@@ -36,6 +36,7 @@ FillLayer fill_for_target(const cv::Mat& rgb, Rgb8 background, const Renderer& r
         f.trace.epsilon = eps;
         fill = build_fill_layer(rgb, background, renderer, f, palette);
         fill.tolerance = eps;
+        fill.smooth = f.trace.smooth;
         canvas.fill(background);
         for (const Stroke& s : fill.strokes) (void)renderer.draw(canvas, s);
         psnr = paint::psnr(model, canvas.rgb.data());

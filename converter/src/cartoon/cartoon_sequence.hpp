@@ -30,6 +30,9 @@ struct SequenceOptions {
     // false when `output` is a rate search's trial file (io/trial_output.hpp), written in place
     bool atomic_rename = true;
     FillOptions fill;
+    // A key frame short of its target also tries outlines smoothed by kShortKeySmooth
+    // (cartoon_sequence.cpp); false when the caller chose fill.trace.smooth.
+    bool smooth_short_keys = true;
     MotionOptions motion;
     std::vector<std::pair<std::string, std::string>> metadata;
     // Told the frame count (when the source knows it) and each frame as it is written; the

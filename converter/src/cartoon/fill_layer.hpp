@@ -39,6 +39,7 @@ struct FillLayer {
     size_t colors = 0, regions = 0;
     std::vector<cv::Vec3b> palette;     // the flat colours used
     double tolerance = 0;               // the outline tolerance (fill_for_target)
+    double smooth = 0;                  // the contour smoothing it was traced with (TraceOptions)
 };
 
 // Traces `rgb` (CV_8UC3 RGB). Regions of the background colour drawn first are left to the

@@ -267,6 +267,7 @@ Result<cartoon::SequenceOptions> sequence_options(const PaintCommandOptions& o) 
     s.background = o.background;
     s.stored = o.stored;
     s.fill = fill_options(o);
+    s.smooth_short_keys = o.outline_smooth < 0;  // --outline-smooth: that smoothing, every frame
     // Sequences trace on 4x4 sub-pixels: with 8x8 the butterfly clip (frames 0-23, 36 dB)
     // took 580 KB instead of 469 KB (fewer still outlines matched frame to frame).
     s.fill.trace.upsample = 4;

@@ -148,8 +148,9 @@ void declare(Args& a, bool plan) {
                                            "for a sequence's key frame; 0.35 otherwise")
         .option("outline-smooth", "PX", "--style cartoon: average a traced edge over +-PX pixels (0..2) before "
                                         "its outline is simplified: a blurred or noisy edge takes fewer vertices. "
-                                        "Default: 0, except that a still short of --target-psnr smooths its "
-                                        "0.25 and 0.5 px outline trials by as much as their tolerance")
+                                        "Default: unsmoothed, but short of --target-psnr a still smooths its 0.25 "
+                                        "and 0.5 px outline trials by as much as their tolerance, and a sequence's "
+                                        "key frame also tries 0.25 px of smoothing; the smallest is kept")
         .flag("no-lines", "--style cartoon: trace thin regions as polygons only. By default a thin region "
                           "whose centreline curves are as close and smaller is drawn as lines: anti-aliased "
                           "curves with widths (format 1.4; Grease Pencil line strokes)")
