@@ -150,13 +150,17 @@ try {
     await page.close();
   }
 
-  // A cartoon with lines (format 1.4: anti-aliased curves) draws as spt render draws it.
+  // A cartoon with lines (format 1.4: anti-aliased curves) and stamps replayed after its
+  // polygons and lines (format 1.5, coding 2 with lead strokes) draws as spt render draws it.
   const butterfly = path.join(media, 'video', 'butterfly-cartoon.avi');
   if (!fs.existsSync(butterfly)) throw new Error(`media missing: ${butterfly}`);
-  run('paint', butterfly, '-o', w('toon.spt'), '--frames', '40-41', '--style', 'cartoon', '--target-psnr', '30',
+  run('paint', butterfly, '-o', w('toon.spt'), '--frames', '40-41', '--style', 'cartoon', '--target-psnr', '36',
       '--seed', '1', '--progress', 'none');
-  const kinds = JSON.parse(run('info', w('toon.spt'), '--json')).strokes.kinds;
-  assert.ok(kinds.curve > 20, `toon.spt holds lines: ${JSON.stringify(kinds)}`);
+  const toon = JSON.parse(run('info', w('toon.spt'), '--json', '--frames'));
+  const kinds = toon.strokes.kinds;
+  assert.ok(kinds.curve > 20 && kinds.stamp > 100, `toon.spt holds lines and stamps: ${JSON.stringify(kinds)}`);
+  assert.equal(toon.format_version, '1.5');
+  assert.deepEqual(toon.frame_list.map((f) => f.coding), ['replay', 'replay']);
   run('export', w('toon.spt'), '-o', w('toon.html'));
   {
     const { page, errors } = await openPlayer(context, w('toon.html'));
