@@ -142,15 +142,16 @@ bool code_lead(C& c, ReplayCoderState& rs, std::vector<Stroke>& lead, uint64_t a
     return true;
 }
 
-// Whether every set that has strokes draws from one region (then coded once, flags bit 2).
-bool one_region(const std::vector<ReplaySet>& sets) {
-    const ReplaySet* first = nullptr;
+// The region every set that has strokes draws from (then coded once, flags bit 2); null when
+// they draw from different ones, or no set has strokes.
+const ReplayRegion* one_region(const std::vector<ReplaySet>& sets) {
+    const ReplayRegion* first = nullptr;
     for (const ReplaySet& s : sets) {
         if (s.strokes.empty()) continue;
-        if (!first) first = &s;
-        else if (!(s.region == first->region)) return false;
+        if (!first) first = &s.region;
+        else if (!(s.region == *first)) return nullptr;
     }
-    return first != nullptr;
+    return first;
 }
 
 template <class C>
@@ -186,11 +187,10 @@ bool encode_replay_body(const Frame& f, const ReplayEnv& env, std::vector<uint8_
     if (!plan(f, hd, env.shape.templates, env.allow_lead, lead, sets)) return false;
     // One region for all sets in a file that is (or this frame makes) 1.5; files that are not
     // keep their bytes.
-    const bool shared = env.allow_lead && (lead > 0 || env.shape.version_minor >= kLeadMinorVersion) && one_region(sets);
+    const ReplayRegion* common = one_region(sets);
+    const bool shared = env.allow_lead && (lead > 0 || env.shape.version_minor >= kLeadMinorVersion) && common;
     if (shared) {
-        const ReplaySet* first = nullptr;
-        for (const ReplaySet& s : sets) if (!first && !s.strokes.empty()) first = &s;
-        const ReplayRegion region = first->region;
+        const ReplayRegion region = *common;
         for (ReplaySet& s : sets) s.region = region;
     }
     Canvas canvas;
