@@ -11,6 +11,10 @@ namespace spt {
 
 #define SPT_STR2(x) #x
 #define SPT_STR(x) SPT_STR2(x)
+// What `spt --version` advertises is the newest format feature this library writes.
+static_assert(SPT_FORMAT_MAJOR == 1 && SPT_FORMAT_MINOR == kLeadMinorVersion,
+              "SPT_FORMAT_MINOR must name the newest format minor version the library writes");
+
 const char* library_version() {
     return SPT_STR(SPT_VERSION_MAJOR) "." SPT_STR(SPT_VERSION_MINOR) "." SPT_STR(SPT_VERSION_PATCH);
 }
