@@ -24,7 +24,10 @@ librsvg (ffmpeg's svg decoder). x265 bytes are the raw HEVC stream, AV1 the raw 
 container), spt the whole .spt file (header, templates and metadata included), potrace the sum
 of one SVG per frame. Each clip's still also gives a contact sheet OUT/CLIP-contact.png:
 source | cartoon | default painter | x265 420p at the cartoon's bytes, the quarter of the frame
-with the most edges, at 2x. Every encoder gets at most THREADS threads. Recorded results: the commit messages
+with the most edges, at 2x. A still also gives its flat-colour layer ("cartoon fills only": the
+cartoon's polygons and lines at its outline tolerance and smoothing, no stamps) and x265 444p at
+that layer's PSNR: where the source's detail above the layer's PSNR is what the stamps chase
+(blur, codec noise), this says whether the outlines alone already cost more than blocks. Every encoder gets at most THREADS threads. Recorded results: the commit messages
 of this file (git log bench/cartoon_bench.py).
 """
 import argparse
@@ -171,6 +174,30 @@ def codec_at(spt, codec, src_pattern, ref, still, base, pix, threads, psnr=None,
     return best + (dec,)
 
 
+def painter_options(spt, path):
+    """The `painter.options` of a .spt file as a dict (key=value words)."""
+    meta = json.loads(run([spt, "info", path, "--json", "--no-fields"]).stdout).get("metadata", {})
+    return dict(w.split("=", 1) for w in meta.get("painter.options", "").split() if "=" in w)
+
+
+def fills_rows(spt, cartoon_spt, src, base, threads):
+    """A still's flat-colour layer: the cartoon painting's own outlines (its tolerance and
+    smoothing from painter.options), at a PSNR target every fill layer reaches, so without
+    stamps; and x265 444p at that layer's PSNR. Where x265 needs fewer bytes even here, the
+    source's edges and fills alone cost more as polygons than as blocks."""
+    opts = painter_options(spt, cartoon_spt)
+    extra = ["--style", "cartoon"] + ([] if opts.get("lines", "1") == "1" else ["--no-lines"])
+    if float(opts["outline-tolerance"]) > 0:
+        extra += ["--target-psnr", "10", "--outline-tolerance", opts["outline-tolerance"],
+                  "--outline-smooth", opts.get("outline-smooth", "0")]
+    else:  # the coarsest outline whose polygons reached the target: the painting had no stamps
+        extra += ["--target-psnr", opts["target-psnr"]]
+    b, out, t = spt_paint(spt, src, base + "-fills", extra, threads, 1)
+    p, s = compare(spt, out, src)
+    xb, xp, xs, crf, _ = codec_at(spt, "x265", src, src, True, base + "-fills-x265", "yuv444p", threads, psnr=p)
+    return [("cartoon fills only", b, p, s, t), (f"x265 444p =fills crf {crf}", xb, xp, xs, None)]
+
+
 def potrace_rows(spt, cartoon_spt, src, ref, base, n):
     """potrace per colour layer (bench/potrace_layers.py) on the source frames, with the palette
     of the cartoon's polygons and lines in the same frame; rasterized by librsvg (ffmpeg's svg decoder).
@@ -294,6 +321,8 @@ def main():
                 if codec == "x265" and n == 1:
                     sheet = os.path.join(a.out, f"{name}-contact.png")
                     contact_sheet([src, cartoon_out, default_out, dec], sheet)
+            if n == 1:
+                rows += fills_rows(a.spt, base + "-cartoon.spt", src, base, a.threads)
             rows += potrace_rows(a.spt, base + "-cartoon.spt", src, ref, base + "-potrace", n)
             for coder, b, p, s, t in rows:
                 ts = f"{t:8.3f}" if t is not None else "       -"
