@@ -121,11 +121,16 @@ Result<std::string> export_svg(const StreamInfo& info, const std::vector<Stroke>
     std::string o = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     o += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(h.width) + "\" height=\"" +
          std::to_string(h.height) + "\" viewBox=\"0 0 " + std::to_string(h.width) + " " + std::to_string(h.height) + "\">\n";
-    // Bitmap templates as luminance masks in template space.
+    // Bitmap templates as luminance masks in template space, those the strokes draw.
+    std::vector<bool> used(info.templates.size(), false);
+    for (const Stroke& s : strokes) {
+        const size_t t = s.kind == StrokeKind::Stamp ? s.stamp.tmpl : s.kind == StrokeKind::Affine ? s.affine.tmpl : used.size();
+        if (t < used.size()) used[t] = true;
+    }
     bool defs = false;
     for (size_t i = 0; i < info.templates.size(); ++i) {
         const Template& t = info.templates[i];
-        if (t.kind != TemplateKind::Bitmap) continue;
+        if (t.kind != TemplateKind::Bitmap || !used[i]) continue;
         if (!defs) { o += "<defs>\n"; defs = true; }
         auto png = encode_png(t.width, t.height, 1, t.pixels.data());
         o += "<mask id=\"t" + std::to_string(i) + "\" maskUnits=\"userSpaceOnUse\" maskContentUnits=\"userSpaceOnUse\" x=\"-1\" y=\"-1\" width=\"2\" height=\"2\">";

@@ -78,7 +78,7 @@ TEST(CliSyntax, HelpIsGeneratedFromTheOptionDeclarations) {
         {"verify", {"arguments:"}},
         {"pack", {"--stored"}},
         {"import", {"-o, --output OUT.spt", "--from NAME", "-q, --quiet", "Importers (--from):"}},
-        {"export", {"-o, --output OUT", "--frames RANGE"}},
+        {"export", {"-o, --output OUT", "--frames RANGE", "--vector-only"}},
         {"compare", {"--json"}},
     };
     for (const auto& w : wants) {
@@ -105,7 +105,8 @@ TEST(CliSyntax, BadCommandLinesExitTwoWithTheCommandNamed) {
     for (const auto& args : std::vector<std::vector<std::string>>{
              {"paint"}, {"paint", "in.png"}, {"paint", "in.png", "-o"}, {"paint", "a.png", "b.png", "-o", "x.spt"},
              {"paint", "in.png", "-o", "x.spt", "--bogus=1"}, {"import", "x.json", "--from"},
-             {"export", "x.spt", "--output"}, {"compare", "a.png", "b.png", "--min-psnr=abc"}}) {
+             {"export", "x.spt", "--output"}, {"export", "x.spt", "-o", "x.json", "--vector-only"},
+             {"export", "x.spt", "-o", "x.html", "--vector-only"}, {"compare", "a.png", "b.png", "--min-psnr=abc"}}) {
         auto r = run_spt(d, args);
         EXPECT_EQ(r.code, 2) << args[0] << " " << r.err;
         EXPECT_EQ(r.err.rfind("spt " + args[0] + ": ", 0), 0u) << r.err;

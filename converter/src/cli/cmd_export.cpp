@@ -32,6 +32,9 @@ int cmd_export(int argc, char** argv) {
                                  "OUT.svg: one SVG per frame, with #### (or %04d) in the name for several frames; "
                                  "OUT.html: one self-contained page that plays the clip (web/README.md)", 'o')
         .option("frames", "RANGE", "SVG only: the frames to export (\"0-10,20\"; 0-based)")
+        .flag("vector-only", "SVG only: leave out stamp and affine strokes, keeping the polygons and curves: a "
+                             "--style cartoon painting's fills and lines as plain vector art, without the residual "
+                             "stamps that add its last decibels (their count is said on stderr)")
         .flag("web", "write DIR/ for a web server: the player (web/README.md), its WebAssembly module, the clip and "
                      "index.html (OUT.html instead: one self-contained page that plays offline)")
         .epilog("The JSON output imports back (spt import) into the same .spt file. In the SVG, each stamp or\n"
@@ -47,11 +50,15 @@ int cmd_export(int argc, char** argv) {
     if (out.empty()) return args.usage_error("missing -o OUT.json or -o OUT.svg");
     if (is_web_export(out, args.has("web"))) {
         if (args.has("frames")) return args.usage_error("--frames applies to SVG output only (the player holds every frame)");
+        if (args.has("vector-only")) return args.usage_error("--vector-only applies to SVG output only (the player draws every stroke)");
         return export_web(in, out, args.has("web"));
     }
     const bool json = ends_with(out, ".json"), svg = ends_with(out, ".svg");
     if (!json && !svg) return args.usage_error("the output must end in .json, .svg or .html (or give --web and a folder): " + out);
     if (json && args.has("frames")) return args.usage_error("--frames applies to SVG output only (JSON holds every frame as stored)");
+    if (json && args.has("vector-only"))
+        return args.usage_error("--vector-only applies to SVG output only (JSON holds every stroke, to import back)");
+    const bool vector_only = args.has("vector-only");
     io::FrameRange range;
     if (args.has("frames")) {
         auto r = io::parse_frame_range(args.get("frames"));
@@ -96,14 +103,24 @@ int cmd_export(int argc, char** argv) {
     const bool pattern = io::is_sequence_pattern(out);
     if (picked.size() > 1 && !pattern)
         return args.usage_error(std::to_string(picked.size()) + " frames need a frame number placeholder in the output name (OUT.####.svg), or --frames N");
+    uint64_t left_out = 0;
     for (size_t i : picked) {
         auto live = r.strokes_at(i);
         if (!live) return fail(io::frame_place(r, i) + ": " + io::describe_error(in, live.error()));
-        auto text = import::export_svg(r.info(), **live);
+        std::vector<Stroke> vector;
+        if (vector_only)
+            for (const Stroke& s : **live) {
+                if (s.kind == StrokeKind::Polygon || s.kind == StrokeKind::Curve) vector.push_back(s);
+                else ++left_out;
+            }
+        auto text = import::export_svg(r.info(), vector_only ? vector : **live);
         if (!text) return fail(in + ": " + text.error().message);
         const std::string path = pattern ? io::format_frame(out, long(i)) : out;
         if (Status s = import::write_file_atomic(path, *text); !s) return fail(s.error().message);
     }
+    if (left_out > 0)
+        std::fprintf(stderr, "spt export: --vector-only left out %llu stamp and affine strokes (%zu frame%s)\n",
+                     (unsigned long long)left_out, picked.size(), picked.size() == 1 ? "" : "s");
     return 0;
 }
 

@@ -15,7 +15,8 @@ std::string export_json(const Document& doc);
 
 // One frame (its live stroke list) as a standalone SVG a browser renders like spt::Renderer:
 // stamp and affine strokes are their template (analytic shape, or bitmap as a PNG mask) under
-// transform="matrix(...)"; curves are round-capped outlines.
+// transform="matrix(...)"; curves are round-capped outlines. Only the bitmap templates some
+// stroke draws are written as masks.
 Result<std::string> export_svg(const StreamInfo& info, const std::vector<Stroke>& strokes);
 
 // Writes `data` to `path` through spt::AtomicFile (no half-written output, no symlink followed).
