@@ -17,6 +17,9 @@ struct TraceOptions {
     int upsample = 8;          // sub-pixel resolution of the outline (1/upsample pixel)
     double epsilon = 0.35;     // simplification tolerance, pixels
     int extend = 2;            // a region reaches this far under regions drawn after it
+    // Under a later region that covers part of a pixel (a thin outline between this fill and
+    // the ground), the fill takes the share of the rest that the source gives it, not all of it.
+    bool beside_ink = true;
     double min_area = 1.0;     // outlines enclosing less than this (pixels) are dropped
     bool fit = true;           // sides refitted to the contour (fit_outline.hpp)
     int lattice = 2;           // vertices on a lattice of this many Q4 units (4: 1/4 pixel)
