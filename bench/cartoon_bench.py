@@ -7,6 +7,7 @@ usage: python3 bench/cartoon_bench.py [--spt build/bin/spt] [--media ../shared/m
                                       [--target 36] [--frames 24] [--threads 2]
                                       [--out /tmp/spt-cartoon-bench] [--stills-only]
                                       [--clips star,taffy,butterfly] [--repeat 3]
+                                      [--codecs x265,av1]
 
 Clips: cartoon/star and cartoon/taffy (RGBA, flattened over white) and video/butterfly-cartoon.avi,
 the first FRAMES frames of each. For each clip, once on one still (frame 30 of star and taffy,
@@ -62,10 +63,11 @@ def compare(spt, a, b):
 
 
 def prepare(media, out, frames):
-    """Each clip as a folder of flattened RGB PNGs d/f.0000.png ..., and its still."""
+    """Each clip as a folder of flattened RGB PNGs d/f.0000.png ..., and its still. A folder per
+    frame count (NAME-Nf): a sequence is every file of its folder."""
     clips = []
     for name, still in (("star", 30), ("taffy", 30)):
-        d = os.path.join(out, name)
+        d = os.path.join(out, f"{name}-{frames}f")
         os.makedirs(d, exist_ok=True)
         src = os.path.join(media, "cartoon", name)
         for i in range(frames):
@@ -80,7 +82,7 @@ def prepare(media, out, frames):
                "color=white,format=rgb24[b];[b][0]scale2ref[b][f];[b][f]overlay=format=auto:shortest=1,format=rgb24",
                "-frames:v", "1", s)
         clips.append((name, d, s))
-    d = os.path.join(out, "butterfly")
+    d = os.path.join(out, f"butterfly-{frames}f")
     os.makedirs(d, exist_ok=True)
     avi = os.path.join(media, "video", "butterfly-cartoon.avi")
     if not os.path.exists(os.path.join(d, "f.0000.png")):
@@ -276,9 +278,10 @@ def main():
     ap.add_argument("--stills-only", action="store_true")
     ap.add_argument("--clips", default="star,taffy,butterfly")
     ap.add_argument("--repeat", type=int, default=3, help="paintings per case; the median time is printed")
+    ap.add_argument("--codecs", default="x265,av1", help="the video codecs compared (x265, av1)")
     a = ap.parse_args()
     has_aom = "libaom-av1" in run(["ffmpeg", "-hide_banner", "-encoders"]).stdout
-    if not has_aom:
+    if not has_aom and "av1" in a.codecs.split(","):
         print("AV1: this ffmpeg has no libaom-av1 encoder; AV1 rows left out")
     os.makedirs(a.out, exist_ok=True)
     clips = prepare(a.media, a.out, a.frames)
@@ -310,7 +313,7 @@ def main():
             b, default_out, t = spt_paint(a.spt, src, base + "-default", ["--target-psnr", str(a.target)], a.threads, n, a.repeat)
             p, s = compare(a.spt, default_out, ref)
             rows.append(("spt default painter", b, p, s, t))
-            codecs = ["x265"] + (["av1"] if has_aom else [])
+            codecs = [c for c in ("x265", "av1") if c in a.codecs.split(",") and (c != "av1" or has_aom)]
             for codec in codecs:
                 for pix in ("yuv420p", "yuv444p"):
                     b, p, s, crf, _ = codec_at(a.spt, codec, ffsrc, ref, n == 1, f"{base}-{codec}-{pix}", pix, a.threads, psnr=cp)

@@ -258,6 +258,33 @@ TEST(CartoonCli, StarFrameReaches36dBInFewBytes) {
     EXPECT_EQ(c.code, 0) << c.out << c.err;
 }
 
+// A target the painting cannot reach (noise, which neither polygons nor stamps describe) is
+// said on stderr, for a still and for the frames of a sequence, and the file is still written;
+// a reached target says nothing.
+TEST(CartoonCli, ATargetFallenShortOfIsSaid) {
+    TempDir dir;
+    cv::Mat art = flat_art(96, 72), noise(art.size(), CV_8UC3);
+    cv::theRNG().state = 11;
+    cv::randu(noise, cv::Scalar::all(0), cv::Scalar::all(48));
+    cv::add(art, noise, art);
+    for (const char* name : {"f.0000.png", "f.0001.png"})
+        ASSERT_TRUE(spt::io::write_image(dir.file(name), uint32_t(art.cols), uint32_t(art.rows), art.data));
+    auto still = run_spt(dir, {"paint", dir.file("f.0000.png"), "-o", dir.file("s.spt"), "--style", "cartoon",
+                               "--target-psnr", "45", "--progress", "none"});
+    ASSERT_EQ(still.code, 0) << still.err;
+    EXPECT_NE(still.err.find("warning: " + dir.file("s.spt") + " is "), std::string::npos) << still.err;
+    EXPECT_NE(still.err.find("short of --target-psnr 45.00"), std::string::npos) << still.err;
+    EXPECT_TRUE(fs::exists(dir.file("s.spt")));
+    auto seq = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("q.spt"), "--style", "cartoon",
+                             "--target-psnr", "45", "--progress", "none"});
+    ASSERT_EQ(seq.code, 0) << seq.err;
+    EXPECT_NE(seq.err.find("warning: 2 of 2 frames short of --target-psnr 45.00 (lowest "), std::string::npos) << seq.err;
+    auto reached = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("r.spt"), "--style", "cartoon",
+                                 "--target-psnr", "20", "--progress", "none"});
+    ASSERT_EQ(reached.code, 0) << reached.err;
+    EXPECT_EQ(reached.err, "");
+}
+
 // Text whose polygons cannot reach 36 dB alone: stamps make up the rest, and the outline is the
 // one of the smallest file, recorded in painter.options (tolerance 0, the default search, when
 // the 0.35 px default wins); the preview is the file. The 0.25 and 0.5 px trials are smoothed by

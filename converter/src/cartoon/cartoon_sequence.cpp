@@ -237,7 +237,11 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             opts.progress->update(double(index + 1), detail);
         }
         psnr_sum += p;
-        rep.min_psnr = std::min(rep.min_psnr, p);
+        if (p < rep.min_psnr) {
+            rep.min_psnr = p;
+            rep.min_psnr_frame = uint32_t(rep.frames);
+        }
+        if (opts.paint.target_psnr > 0 && p < opts.paint.target_psnr - 0.005) ++rep.frames_short;
         ++rep.frames;
         ++index;
         ++since_key;

@@ -47,6 +47,8 @@ struct SequenceReport {
     uint64_t frames = 0, key_frames = 0, motion_frames = 0, bytes = 0;
     uint64_t polygons_added = 0, polygons_kept = 0, stamps_added = 0, removed = 0;
     double mean_psnr = 0, min_psnr = 99, seconds = 0;
+    uint32_t min_psnr_frame = 0;  // the frame (0-based, in the file) of min_psnr
+    uint64_t frames_short = 0;    // frames below the PSNR target (by more than 0.005 dB)
     Rational fps{24, 1};  // the file's frame rate
     bool interrupted = false;  // stopped by a signal: the file is valid and holds `frames`
 };

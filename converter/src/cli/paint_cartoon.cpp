@@ -215,6 +215,9 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
                      o.output.c_str(), st.colors, st.regions, st.polygons, st.vertices, st.lines, st.line_points,
                      int(st.grid), st.fill_psnr,
                      (unsigned long long)st.stamps.strokes, st.stamps.psnr, (unsigned long long)bytes, secs);
+    if (po.target_psnr > 0 && st.stamps.psnr < po.target_psnr - 0.005)
+        std::fprintf(stderr, "spt paint: warning: %s is %.2f dB, short of --target-psnr %.2f: the residual stamps stopped "
+                             "improving it\n", o.output.c_str(), st.stamps.psnr, po.target_psnr);
     return 0;
 }
 
@@ -313,6 +316,11 @@ int paint_cartoon_sequence(const PaintCommandOptions& o, const Metadata& extra, 
                      (unsigned long long)r.polygons_added, (unsigned long long)r.polygons_kept,
                      (unsigned long long)r.stamps_added, (unsigned long long)r.removed, r.mean_psnr, r.min_psnr,
                      (unsigned long long)r.bytes, r.seconds, r.frames ? r.seconds / double(r.frames) : 0.0);
+    if (r.frames_short > 0)
+        std::fprintf(stderr, "spt paint: warning: %llu of %llu frames short of --target-psnr %.2f (lowest %.2f dB, frame %u "
+                             "of the file): the residual stamps stopped improving them\n",
+                     (unsigned long long)r.frames_short, (unsigned long long)r.frames, s.paint.target_psnr, r.min_psnr,
+                     r.min_psnr_frame);
     return 0;
 }
 
