@@ -28,8 +28,10 @@ source | cartoon | default painter | x265 420p at the cartoon's bytes, the quart
 with the most edges, at 2x. A still also gives its flat-colour layer ("cartoon fills only": the
 cartoon's polygons and lines at its outline tolerance and smoothing, no stamps) and x265 444p at
 that layer's PSNR: where the source's detail above the layer's PSNR is what the stamps chase
-(blur, codec noise), this says whether the outlines alone already cost more than blocks. Every encoder gets at most THREADS threads. Recorded results: the commit messages
-of this file (git log bench/cartoon_bench.py).
+(blur, codec noise), this says whether the outlines alone already cost more than blocks. Every
+encoder gets at most THREADS threads; --codecs narrows the codecs compared. Recorded results:
+the commit messages of this file (git log bench/cartoon_bench.py) and
+converter/src/cartoon/README.md.
 """
 import argparse
 import gzip

@@ -151,8 +151,7 @@ std::vector<PolygonStroke> trace_region(const cv::Mat& rgb, const Regions& regs,
                 // Under a later region that covers part of the pixel (a thin outline between
                 // this fill and the ground): as much of the rest as the source shows this fill,
                 // the least share any ground around explains (a fill showing past the outline
-                // is worse than a sliver of ground under it; the butterfly's still at 36 dB:
-                // 17,198 bytes, 17,331 with the best-fitting ground's share).
+                // costs more stamps than a sliver of ground under it).
                 float best = -1;
                 for (int dy = -2; dy <= 2; ++dy)
                     for (int dx = -2; dx <= 2; ++dx) {
