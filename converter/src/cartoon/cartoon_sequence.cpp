@@ -83,6 +83,47 @@ Result<KeyFrame> paint_key(const cv::Mat& rgb, const paint::ImageView& model, co
     return k;
 }
 
+// A key frame, which chooses the palette, grid and outline tolerance for its interval, so that
+// what stays still traces the same in the frames after. One short of its target is also painted
+// with a coarser outline (kCoarserKeyTolerance) and, with smooth_short_keys, smoothed
+// (kShortKeySmooth): stamps make up what the polygons miss, and which outline trades vertices for
+// stamps best depends on the picture; the cheapest key frame decides it for the interval. With
+// threads the coarser painting runs beside the first (unused when that one reaches the target).
+Result<KeyFrame> choose_key(const cv::Mat& rgb, const paint::ImageView& model, const Renderer& renderer,
+                            const paint::PaintSetup& setup, const SequenceOptions& opts, uint32_t index, bool parallel) {
+    const bool may_try = opts.fill.search_tolerance && opts.paint.target_psnr > 0;
+    auto coarser = std::async(parallel && may_try ? std::launch::async : std::launch::deferred, [&] {
+        FillOptions t = opts.fill;
+        t.search_tolerance = false;
+        t.trace.epsilon = kCoarserKeyTolerance;
+        if (opts.smooth_short_keys) t.trace.smooth = kShortKeySmooth;
+        return paint_key(rgb, model, renderer, setup, opts, t, index);
+    });
+    auto painted = paint_key(rgb, model, renderer, setup, opts, opts.fill, index);
+    if (!painted) return painted.error();
+    KeyFrame k = std::move(*painted);
+    if (k.short_of_target && may_try) {
+        // The default tolerance smoothed, beside the coarser painting when it still runs.
+        std::optional<Result<KeyFrame>> smoothed;
+        if (opts.smooth_short_keys) {
+            FillOptions t = opts.fill;
+            t.search_tolerance = false;
+            t.trace.smooth = kShortKeySmooth;
+            smoothed = paint_key(rgb, model, renderer, setup, opts, t, index);
+            if (!*smoothed) return smoothed->error();
+        }
+        auto c = coarser.get();
+        if (!c) return c.error();
+        if (std::getenv("SPT_CARTOON_DEBUG"))
+            std::fprintf(stderr, "key frame %u: tolerance %.2f cost %.0f, %.2f cost %.0f, smoothed %.0f\n", index,
+                         k.fill.tolerance, frame_cost(k.frame), c->fill.tolerance, frame_cost(c->frame),
+                         smoothed ? frame_cost((**smoothed).frame) : 0.0);
+        if (frame_cost(c->frame) < frame_cost(k.frame)) k = std::move(*c);
+        if (smoothed && frame_cost((**smoothed).frame) < frame_cost(k.frame)) k = std::move(**smoothed);
+    }  // else an asynchronous coarser painting is waited for, unused, when `coarser` goes
+    return k;
+}
+
 }  // namespace
 
 Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
@@ -144,44 +185,8 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
         const paint::ImageView model{W, H, img.rgb.data()};
         const bool key = index == 0 || since_key >= uint32_t(opts.keyframe_interval);
         Frame f;
-        if (key) {
-            // Key frames choose the palette, grid and outline tolerance for their interval, so
-            // that what stays still traces the same in the frames after. A key frame short of
-            // its target is also painted with a coarser outline
-            // (kCoarserKeyTolerance): stamps make up what the polygons miss, and which tolerance
-            // trades vertices for stamps best depends on the picture; the key frame's cost
-            // decides it for the interval. With threads the coarser painting runs beside the
-            // first (unused when that one reaches the target).
-            const bool may_try = opts.fill.search_tolerance && opts.paint.target_psnr > 0;
-            auto coarser = std::async(parallel && may_try ? std::launch::async : std::launch::deferred, [&] {
-                FillOptions t = opts.fill;
-                t.search_tolerance = false;
-                t.trace.epsilon = kCoarserKeyTolerance;
-                if (opts.smooth_short_keys) t.trace.smooth = kShortKeySmooth;
-                return paint_key(rgb, model, **renderer, setup, opts, t, index);
-            });
-            auto painted = paint_key(rgb, model, **renderer, setup, opts, opts.fill, index);
-            if (!painted) return painted.error();
-            KeyFrame k = std::move(*painted);
-            if (k.short_of_target && may_try) {
-                // The default tolerance smoothed, beside the coarser painting when it still runs.
-                std::optional<Result<KeyFrame>> smoothed;
-                if (opts.smooth_short_keys) {
-                    FillOptions t = opts.fill;
-                    t.search_tolerance = false;
-                    t.trace.smooth = kShortKeySmooth;
-                    smoothed = paint_key(rgb, model, **renderer, setup, opts, t, index);
-                    if (!*smoothed) return smoothed->error();
-                }
-                auto c = coarser.get();
-                if (!c) return c.error();
-                if (std::getenv("SPT_CARTOON_DEBUG"))
-                    std::fprintf(stderr, "key frame %u: tolerance %.2f cost %.0f, %.2f cost %.0f, smoothed %.0f\n", index,
-                                 k.fill.tolerance, frame_cost(k.frame), c->fill.tolerance, frame_cost(c->frame),
-                                 smoothed ? frame_cost((**smoothed).frame) : 0.0);
-                if (frame_cost(c->frame) < frame_cost(k.frame)) k = std::move(*c);
-                if (smoothed && frame_cost((**smoothed).frame) < frame_cost(k.frame)) k = std::move(**smoothed);
-            }  // else an asynchronous coarser painting is waited for, unused, when `coarser` goes
+        // A key frame starts an interval: its palette, grid and outline for the frames after.
+        auto take_key = [&](KeyFrame&& k) {
             palette = k.fill.palette;
             fo = opts.fill;
             fo.grids = {k.fill.grid ? k.fill.grid : uint8_t(4)};
@@ -193,6 +198,11 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             rep.stamps_added += k.stamps;
             ++rep.key_frames;
             since_key = 0;
+        };
+        if (key) {
+            auto chosen = choose_key(rgb, model, **renderer, setup, opts, index, parallel);
+            if (!chosen) return chosen.error();
+            take_key(std::move(*chosen));
         } else {
             const FillLayer fill = build_fill_layer(rgb, opts.background, **renderer, fo, &palette, &live);
             InterInput in;
@@ -214,13 +224,28 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
                              index, r->lenient ? "lenient" : "strict", r->frame.removed.size(),
                              (unsigned long long)r->polygons_added, r->stood_in, r->left_out, r->kept_psnr,
                              (unsigned long long)r->stamps, r->cost);
-            f = std::move(r->frame);
-            canvas = std::move(r->canvas);
-            if (!f.motion.empty()) ++rep.motion_frames;
-            rep.polygons_kept += r->polygons_kept;
-            rep.polygons_added += r->polygons_added;
-            rep.stamps_added += r->stamps;
-            rep.removed += f.removed.size();
+            // An inter frame short of the target (the stamps stop improving a canvas that
+            // many frames of kept and added strokes built) is painted again as a key frame,
+            // kept when it comes closer.
+            const double target = opts.paint.target_psnr;
+            std::optional<KeyFrame> fresh;
+            if (target > 0 && paint::psnr(model, r->canvas.rgb.data()) < target - 0.005) {
+                auto chosen = choose_key(rgb, model, **renderer, setup, opts, index, parallel);
+                if (!chosen) return chosen.error();
+                if (paint::psnr(model, chosen->canvas.rgb.data()) > paint::psnr(model, r->canvas.rgb.data()))
+                    fresh = std::move(*chosen);
+            }
+            if (fresh) {
+                take_key(std::move(*fresh));
+            } else {
+                f = std::move(r->frame);
+                canvas = std::move(r->canvas);
+                if (!f.motion.empty()) ++rep.motion_frames;
+                rep.polygons_kept += r->polygons_kept;
+                rep.polygons_added += r->polygons_added;
+                rep.stamps_added += r->stamps;
+                rep.removed += f.removed.size();
+            }
         }
         f.index = index;
         if (Status s = (*writer)->append(f); !s) {
