@@ -163,6 +163,35 @@ TEST(CartoonPaint, AFillStopsUnderAThinOutline) {
     std::printf("thin outline: fill layer %.2f dB, without beside_ink %.2f dB\n", a.stats.fill_psnr, b.stats.fill_psnr);
 }
 
+// Where such an outline is wide enough to hide every pixel it crosses (1.5 px of black over the
+// edge of a yellow ellipse, in pieces drawn after the fill), the source shows nothing of the
+// fill under it, and a pixel-wise rule leaves the fill's edge stepping from pixel to pixel along
+// the line: a vertex every pixel or two. TraceOptions::under_ink_middle ends the fill under the
+// line's middle, found from its blends, which runs as smoothly as the line does. Measured 113
+// vertices against 260 without, the fill layer at 36.09 against 36.18 dB (synfig's star as it
+// morphs: its fill 117 vertices against 373).
+TEST(CartoonPaint, AFillUnderAnOutlineEndsUnderItsMiddle) {
+    const int k = 8, w = 120, h = 100;
+    cv::Mat big(h * k, w * k, CV_8UC3, cv::Scalar(255, 255, 255));
+    const cv::Point centre(60 * k, 50 * k);
+    const cv::Size axes(45 * k, 35 * k);
+    cv::ellipse(big, centre, axes, 20, 0, 360, cv::Scalar(0, 255, 255), cv::FILLED);
+    for (int a = 0; a < 360; a += 90) cv::ellipse(big, centre, axes, 20, a, a + 70, cv::Scalar(0, 0, 0), 12);  // 1.5 px
+    cv::Mat art;
+    cv::resize(big, art, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+    spt::cartoon::FillOptions with;
+    with.search_tolerance = false;
+    with.lines = false;  // the outline as polygons: only the fill's vertices differ
+    spt::cartoon::FillOptions without = with;
+    without.trace.under_ink_middle = false;
+    const Painted a = paint_art(art, 20, 1, with), b = paint_art(art, 20, 1, without);
+    EXPECT_EQ(a.stats.stamps.strokes, 0u);
+    EXPECT_LT(double(a.stats.vertices), 0.75 * double(b.stats.vertices)) << b.stats.vertices << " vertices without";
+    EXPECT_GE(a.stats.fill_psnr, b.stats.fill_psnr - 0.2) << "without under_ink_middle " << b.stats.fill_psnr << " dB";
+    std::printf("outline over a fill: %u vertices at %.2f dB, without under_ink_middle %u at %.2f dB\n",
+                unsigned(a.stats.vertices), a.stats.fill_psnr, unsigned(b.stats.vertices), b.stats.fill_psnr);
+}
+
 TEST(CartoonPaint, ALowTargetTakesCoarserOutlines) {
     const Painted fine = paint_art(flat_art(), 20, 1, [] { spt::cartoon::FillOptions f; f.search_tolerance = false; return f; }());
     const Painted coarse = paint_art(flat_art(), 20);

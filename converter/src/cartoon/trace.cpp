@@ -82,12 +82,14 @@ float blend_share(const cv::Vec3b& p, const cv::Vec3b& a, const cv::Vec3b& b) {
     return float(std::clamp(num / den, 0.0, 1.0));
 }
 
-// Share of colour `a` in the part of pixel `p` that colour `ink` leaves uncovered, when p blends
-// a, ink and `b` (a fill, the thin outline drawn over it later, the ground beyond): the least-
-// squares p = b + s (a - b) + k (ink - b) gives a's share s / (1 - k). -1 when the colours are
-// too close to tell, the fit is off by more than 20 levels, or the ink covers nearly all of p
-// (what lies under it does not show).
-float share_beside_ink(const cv::Vec3b& p, const cv::Vec3b& a, const cv::Vec3b& ink, const cv::Vec3b& b) {
+// Pixel `p` as a blend of a fill `a`, the thin outline `ink` drawn over it later and the
+// ground `b` beyond: the least-squares p = b + s (a - b) + k (ink - b), with s and k in 0..1.
+struct InkBlend {
+    double s = 0, k = 0;
+    bool fits = false;  // colours far enough apart to tell, and the fit within 20 levels
+};
+
+InkBlend blend_with_ink(const cv::Vec3b& p, const cv::Vec3b& a, const cv::Vec3b& ink, const cv::Vec3b& b) {
     double u[3], v[3], d[3];
     for (int c = 0; c < 3; ++c) {
         u[c] = double(a[c]) - b[c];
@@ -98,15 +100,74 @@ float share_beside_ink(const cv::Vec3b& p, const cv::Vec3b& a, const cv::Vec3b& 
     const double uv = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     const double ud = u[0] * d[0] + u[1] * d[1] + u[2] * d[2], vd = v[0] * d[0] + v[1] * d[1] + v[2] * d[2];
     const double det = uu * vv - uv * uv;
-    if (uu < 300 || vv < 300 || det < 1e-3 * uu * vv) return -1.f;
-    const double s = std::clamp((ud * vv - vd * uv) / det, 0.0, 1.0), k = std::clamp((vd * uu - ud * uv) / det, 0.0, 1.0);
+    InkBlend r;
+    if (uu < 300 || vv < 300 || det < 1e-3 * uu * vv) return r;
+    r.s = std::clamp((ud * vv - vd * uv) / det, 0.0, 1.0);
+    r.k = std::clamp((vd * uu - ud * uv) / det, 0.0, 1.0);
     double e2 = 0;
     for (int c = 0; c < 3; ++c) {
-        const double e = d[c] - s * u[c] - k * v[c];
+        const double e = d[c] - r.s * u[c] - r.k * v[c];
         e2 += e * e;
     }
-    if (e2 > 400 || k > 0.9) return -1.f;
-    return float(std::clamp(s / (1 - k), 0.0, 1.0));
+    r.fits = e2 <= 400;
+    return r;
+}
+
+// Share of colour `a` in the part of pixel `p` that colour `ink` leaves uncovered (s / (1 - k)
+// of the blend above); -1 when the blend does not fit or the ink covers nearly all of p (what
+// lies under it does not show).
+float share_beside_ink(const cv::Vec3b& p, const cv::Vec3b& a, const cv::Vec3b& ink, const cv::Vec3b& b) {
+    const InkBlend f = blend_with_ink(p, a, ink, b);
+    if (!f.fits || f.k > 0.9) return -1.f;
+    return float(std::clamp(f.s / (1 - f.k), 0.0, 1.0));
+}
+
+// The fill's share of pixel (x, y) of `rgb` that the ink covers nearly all of: the part on the
+// fill's side of the ink's middle, so that the fill ends under the middle of the outline. The
+// source shows nothing of the fill there; the middle is where its pixels' blends say the line
+// is (the ink-weighted centroid across it, along the row or the column that crosses it more
+// steeply), which follows the drawn line to a fraction of a pixel where a pixel-wise rule
+// would step from pixel to pixel. -1 when neither crossing runs from the fill to the ground.
+float share_under_ink_middle(const cv::Mat& rgb, int x, int y, const cv::Vec3b& fill, const cv::Vec3b& ink,
+                             const cv::Vec3b& ground) {
+    constexpr int reach = 4;            // pixels each way: outlines are thin
+    constexpr double faint = 0.03;      // less ink than this ends the crossing
+    float best = -1;
+    double best_width = 1e9;
+    for (int axis = 0; axis < 2; ++axis) {
+        const int sx = axis == 0 ? 1 : 0, sy = axis == 0 ? 0 : 1;
+        auto blend = [&](int t) {
+            const int qx = x + sx * t, qy = y + sy * t;
+            if (qx < 0 || qy < 0 || qx >= rgb.cols || qy >= rgb.rows) return InkBlend{};
+            return blend_with_ink(rgb.at<cv::Vec3b>(qy, qx), fill, ink, ground);
+        };
+        const InkBlend here = blend(0);
+        if (!here.fits) continue;
+        double mass = here.k, moment = here.k * 0.5;
+        int ends[2] = {0, 0};  // the first pixel past the ink on each side
+        bool ok = true;
+        for (int side = 0; side < 2 && ok; ++side) {
+            const int dir = side == 0 ? -1 : 1;
+            int t = dir;
+            for (;; t += dir) {
+                if (std::abs(t) > reach) { ok = false; break; }
+                const InkBlend f = blend(t);
+                if (!f.fits) { ok = false; break; }
+                if (f.k < faint) break;
+                mass += f.k;
+                moment += f.k * (t + 0.5);
+            }
+            ends[side] = t;
+        }
+        const int lo = ends[0], hi = ends[1];
+        if (!ok || mass <= 0) continue;
+        const bool fill_low = blend(lo).s > 0.5, fill_high = blend(hi).s > 0.5;
+        if (fill_low == fill_high) continue;
+        const double middle = moment / mass;  // along the axis, pixel (x, y) spanning 0..1
+        const double share = std::clamp(fill_high ? 1.0 - middle : middle, 0.0, 1.0);
+        if (mass < best_width) { best_width = mass; best = float(share); }
+    }
+    return best;
 }
 
 }  // namespace
@@ -153,6 +214,7 @@ std::vector<PolygonStroke> trace_region(const cv::Mat& rgb, const Regions& regs,
                 // the least share any ground around explains (a fill showing past the outline
                 // costs more stamps than a sliver of ground under it).
                 float best = -1;
+                int ground = -1;
                 for (int dy = -2; dy <= 2; ++dy)
                     for (int dx = -2; dx <= 2; ++dx) {
                         const int qx = x + dx, qy = y + dy;
@@ -162,7 +224,13 @@ std::vector<PolygonStroke> trace_region(const cv::Mat& rgb, const Regions& regs,
                         const float a = share_beside_ink(rgb.at<cv::Vec3b>(box.y + y, box.x + x), mine,
                                                          regs.list[size_t(r)].color, regs.list[size_t(o)].color);
                         if (a >= 0 && (best < 0 || a < best)) best = a;
+                        if (ground < 0) ground = o;
                     }
+                // Where the outline hides the pixel, the source says nothing of the fill: under
+                // the outline's middle.
+                if (best < 0 && ground >= 0 && opts.under_ink_middle)
+                    best = share_under_ink_middle(rgb, box.x + x, box.y + y, mine, regs.list[size_t(r)].color,
+                                                  regs.list[size_t(ground)].color);
                 if (best >= 0) share.at<float>(y, x) = best;
             } else if (r == index) {
                 // The neighbour this pixel blends with: the first visible one around it.

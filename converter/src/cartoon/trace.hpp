@@ -20,6 +20,8 @@ struct TraceOptions {
     // Under a later region that covers part of a pixel (a thin outline between this fill and
     // the ground), the fill takes the share of the rest that the source gives it, not all of it.
     bool beside_ink = true;
+    // Where that outline covers nearly all of a pixel, the fill ends under its middle.
+    bool under_ink_middle = true;
     double min_area = 1.0;     // outlines enclosing less than this (pixels) are dropped
     bool fit = true;           // sides refitted to the contour (fit_outline.hpp)
     int lattice = 2;           // vertices on a lattice of this many Q4 units (4: 1/4 pixel)
