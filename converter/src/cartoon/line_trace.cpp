@@ -1,5 +1,7 @@
 #include "cartoon/line_trace.hpp"
 
+#include "cartoon/fit_outline.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_set>
@@ -302,14 +304,17 @@ std::vector<CurveStroke> line_curves(const LineShape& shape, Rgba8 color, double
         std::vector<char> keep(p.size(), 0);
         keep.front() = keep.back() = 1;
         simplify(p, w, 0, p.size() - 1, opts.epsilon, opts.width_epsilon, keep);
+        std::vector<size_t> kept;
+        for (size_t i = 0; i < p.size(); ++i)
+            if (keep[i]) kept.push_back(i);
+        // Douglas-Peucker keeps centre points, and its chords lie inside every bend: refitted.
+        const std::vector<cv::Point2d> at = fit_polyline(p, kept, 0.75);
         CurveStroke cv;
         cv.color = color;
         cv.supersample = grid;
-        for (size_t i = 0; i < p.size(); ++i) {
-            if (!keep[i]) continue;
-            cv.points.push_back({int32_t(std::lround(p[i].x * 16)), int32_t(std::lround(p[i].y * 16)),
-                                 uint32_t(std::lround(w[i] * 16))});
-        }
+        for (size_t k = 0; k < kept.size(); ++k)
+            cv.points.push_back({int32_t(std::lround(at[k].x * 16)), int32_t(std::lround(at[k].y * 16)),
+                                 uint32_t(std::lround(w[kept[k]] * 16))});
         out.push_back(std::move(cv));
     }
     return out;
