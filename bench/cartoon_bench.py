@@ -180,21 +180,26 @@ def codec_at(spt, codec, src_pattern, ref, still, base, pix, threads, psnr=None,
 
 def painter_options(spt, path):
     """The `painter.options` of a .spt file as a dict (key=value words)."""
-    meta = json.loads(run([spt, "info", path, "--json", "--no-fields"]).stdout).get("metadata", {})
-    return dict(w.split("=", 1) for w in meta.get("painter.options", "").split() if "=" in w)
+    info = json.loads(run([spt, "info", path, "--json", "--no-fields"]).stdout)
+    opts = dict(w.split("=", 1) for w in info.get("metadata", {}).get("painter.options", "").split() if "=" in w)
+    opts["stamps"] = "1" if info.get("templates") else "0"  # a still without stamps carries no templates
+    return opts
 
 
 def fills_rows(spt, cartoon_spt, src, base, threads):
     """A still's flat-colour layer: the cartoon painting's own outlines (its tolerance and
-    smoothing from painter.options), at a PSNR target every fill layer reaches, so without
-    stamps; and x265 444p at that layer's PSNR. Where x265 needs fewer bytes even here, the
-    source's edges and fills alone cost more as polygons than as blocks."""
+    smoothing and smallest region from painter.options), at a PSNR target every fill layer
+    reaches, so without stamps; and x265 444p at that layer's PSNR. Where x265 needs fewer bytes
+    even here, the source's edges and fills alone cost more as polygons than as blocks."""
     opts = painter_options(spt, cartoon_spt)
     extra = ["--style", "cartoon"] + ([] if opts.get("lines", "1") == "1" else ["--no-lines"])
-    if float(opts["outline-tolerance"]) > 0:
-        extra += ["--target-psnr", "10", "--outline-tolerance", opts["outline-tolerance"],
+    if "min-region" in opts:
+        extra += ["--min-region", opts["min-region"]]
+    if opts["stamps"] == "1":  # the polygons fell short: the outline it chose (0: the default 0.35 px)
+        tolerance = opts["outline-tolerance"] if float(opts["outline-tolerance"]) > 0 else "0.35"
+        extra += ["--target-psnr", "10", "--outline-tolerance", tolerance,
                   "--outline-smooth", opts.get("outline-smooth", "0")]
-    else:  # the coarsest outline whose polygons reached the target: the painting had no stamps
+    else:  # the coarsest outline whose polygons reached the target
         extra += ["--target-psnr", opts["target-psnr"]]
     b, out, t = spt_paint(spt, src, base + "-fills", extra, threads, 1)
     p, s = compare(spt, out, src)

@@ -121,6 +121,21 @@ Result<KeyFrame> choose_key(const cv::Mat& rgb, const paint::ImageView& model, c
         if (frame_cost(c->frame) < frame_cost(k.frame)) k = std::move(*c);
         if (smoothed && frame_cost((**smoothed).frame) < frame_cost(k.frame)) k = std::move(**smoothed);
     }  // else an asynchronous coarser painting is waited for, unused, when `coarser` goes
+    if (k.short_of_target && opts.fill.search_min_region && opts.paint.target_psnr > 0 &&
+        opts.fill.min_region_pixels < kMergedRegionPixels) {
+        // The cheapest outline again with small regions merged (kMergedRegionPixels).
+        FillOptions t = opts.fill;
+        t.search_tolerance = false;
+        t.trace.epsilon = k.fill.tolerance;
+        t.trace.smooth = k.fill.smooth;
+        t.min_region_pixels = kMergedRegionPixels;
+        auto merged = paint_key(rgb, model, renderer, setup, opts, t, index);
+        if (!merged) return merged.error();
+        if (std::getenv("SPT_CARTOON_DEBUG"))
+            std::fprintf(stderr, "key frame %u: min region %d cost %.0f, %d cost %.0f\n", index, k.fill.min_region,
+                         frame_cost(k.frame), merged->fill.min_region, frame_cost(merged->frame));
+        if (frame_cost(merged->frame) < frame_cost(k.frame)) k = std::move(*merged);
+    }
     return k;
 }
 
@@ -192,6 +207,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             fo.grids = {k.fill.grid ? k.fill.grid : uint8_t(4)};
             fo.trace.epsilon = k.fill.tolerance;
             fo.trace.smooth = k.fill.smooth;
+            fo.min_region_pixels = k.fill.min_region;
             f = std::move(k.frame);
             canvas = std::move(k.canvas);
             rep.polygons_added += k.polygons;

@@ -127,6 +127,7 @@ FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& 
     const std::vector<cv::Vec3b> palette = given ? *given : find_palette(rgb, opts.palette);
     out.palette = palette;
     out.colors = palette.size();
+    out.min_region = opts.min_region_pixels;
     if (palette.empty()) return out;
     Regions regs = find_regions(rgb, label_pixels(rgb, palette), palette, opts.min_region_pixels);
     out.regions = regs.list.size();

@@ -15,12 +15,23 @@
 
 namespace spt::cartoon {
 
+// The smallest region a trial painting short of its target keeps (FillOptions::min_region_pixels;
+// smaller ones join their neighbours), beside the default 3: compressed video's noise and ringing
+// break its colours into many small regions, each a polygon of its own, where the residual
+// stamps cost less; text's small regions are parts of its letters. Bytes at 36 dB with 3 / 6 / 12
+// / 24: butterfly frame 40 17,316 / 14,904 / 13,330 / 12,791, its 12 frames 37,613 / 34,464 /
+// 31,764 / 36,916; taffy frame 30 21,283 / 21,450 / 21,616 / 24,826, its 12 frames 207,271 at 3
+// and 216,189 at 12.
+constexpr int kMergedRegionPixels = 12;
+
 struct FillOptions {
     PaletteOptions palette;
     TraceOptions trace;
     // Still pictures with a PSNR target: try coarser outlines first (cartoon_paint.hpp).
     bool search_tolerance = true;
     int min_region_pixels = 3;          // smaller components join their neighbours
+    // Short of a PSNR target, a still and a sequence's key frame also try kMergedRegionPixels.
+    bool search_min_region = true;
     std::vector<uint8_t> grids{4, 8};   // supersampling grids tried; the least error wins
     // Bound on the polygons' rendering work (SPEC.md 10), well inside the readers' 2^28.
     uint64_t max_work = uint64_t(1) << 26;
@@ -40,6 +51,7 @@ struct FillLayer {
     std::vector<cv::Vec3b> palette;     // the flat colours used
     double tolerance = 0;               // the outline tolerance (fill_for_target)
     double smooth = 0;                  // the contour smoothing it was traced with (TraceOptions)
+    int min_region = 0;                 // FillOptions::min_region_pixels it was traced with
 };
 
 // Traces `rgb` (CV_8UC3 RGB). Regions of the background colour drawn first are left to the

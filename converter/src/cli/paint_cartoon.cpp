@@ -36,6 +36,10 @@ cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
         f.search_tolerance = false;
     }
     f.trace.smooth = std::max(0.0, o.outline_smooth);
+    if (o.min_region > 0) {
+        f.min_region_pixels = o.min_region;
+        f.search_min_region = false;
+    }
     return f;
 }
 
@@ -198,6 +202,25 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
         if (pick > 0) {
             best = std::move(trials[pick].still);
             best_opts = trials[pick].opts;
+        }
+    }
+    // Still short: the chosen outline again with small regions merged (kMergedRegionPixels), the
+    // smaller file written.
+    if (po.target_psnr > 0 && o.target_bytes == 0 && o.min_region == 0 && best.st.fill_psnr < po.target_psnr) {
+        PaintCommandOptions merged_opts = best_opts;
+        merged_opts.min_region = cartoon::kMergedRegionPixels;
+        Still merged = paint_still(merged_opts, model, setup, **renderer, po);
+        auto a = io::TrialOutput::create(o.output);
+        auto b = io::TrialOutput::create(o.output);
+        if (!a) return fail(a.error().message);
+        if (!b) return fail(b.error().message);
+        auto now = write_still(best_opts, setup, po, best, &*a);
+        if (!now) return fail(now.error().message);
+        auto then = write_still(merged_opts, setup, po, merged, &*b);
+        if (!then) return fail(then.error().message);
+        if (*then < *now) {
+            best = std::move(merged);
+            best_opts = merged_opts;
         }
     }
     auto written = write_still(best_opts, setup, po, best, nullptr);

@@ -151,6 +151,11 @@ void declare(Args& a, bool plan) {
                                         "Default: unsmoothed, but short of --target-psnr a still smooths its 0.25 "
                                         "and 0.5 px outline trials by as much as their tolerance, and a sequence's "
                                         "key frame also tries 0.25 px of smoothing; the smallest is kept")
+        .option("min-region", "PX", "--style cartoon: colour regions smaller than PX pixels (1..100000) join "
+                                    "their neighbours before they are traced. Default: 3, but short of "
+                                    "--target-psnr a still and a sequence's key frame also try 12 and keep the "
+                                    "smaller: compressed video's noise makes many small regions, whose polygons "
+                                    "cost more than the stamps that replace them")
         .flag("no-lines", "--style cartoon: trace thin regions as polygons only. By default a thin region "
                           "whose centreline curves are as close and smaller is drawn as lines: anti-aliased "
                           "curves with widths (format 1.4; Grease Pencil line strokes)")
@@ -293,9 +298,15 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
         return bad("--outline-tolerance: expected 0.01..100 pixels, got '" + v("outline-tolerance") + "'");
     if (a.has("outline-smooth") && !parse_double(v("outline-smooth"), 0, 2, o.outline_smooth))
         return bad("--outline-smooth: expected 0..2 pixels, got '" + v("outline-smooth") + "'");
+    if (a.has("min-region")) {
+        long m = 0;
+        if (!parse_int(v("min-region"), 1, 100000, m))
+            return bad("--min-region: expected 1..100000 pixels, got '" + v("min-region") + "'");
+        o.min_region = int(m);
+    }
     o.lines = !a.has("no-lines");
     // The cartoon painter's options do nothing for the default painter: said, not ignored.
-    for (const char* f : {"outline-tolerance", "outline-smooth", "no-lines"})
+    for (const char* f : {"outline-tolerance", "outline-smooth", "min-region", "no-lines"})
         if (a.has(f) && o.style != "cartoon") return bad(std::string("--") + f + " applies to --style cartoon only");
     long n = 0;
     if (a.has("seed") && !parse_u64(v("seed"), o.paint.seed))
@@ -426,6 +437,7 @@ std::string PaintCommandOptions::canonical() const {
     if (style != "painterly") {  // painterly files keep their bytes
         s << " style=" << style << " outline-tolerance=" << outline_tolerance << " lines=" << (lines ? 1 : 0);
         if (outline_smooth >= 0) s << " outline-smooth=" << outline_smooth;  // files without it keep theirs
+        if (min_region > 0) s << " min-region=" << min_region;
     }
     // Only when not the defaults, so that the files of earlier versions keep their bytes.
     if (color_encoding != "auto") s << " color-encoding=" << color_encoding;
