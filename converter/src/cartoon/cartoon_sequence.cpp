@@ -121,20 +121,26 @@ Result<KeyFrame> choose_key(const cv::Mat& rgb, const paint::ImageView& model, c
         if (frame_cost(c->frame) < frame_cost(k.frame)) k = std::move(*c);
         if (smoothed && frame_cost((**smoothed).frame) < frame_cost(k.frame)) k = std::move(**smoothed);
     }  // else an asynchronous coarser painting is waited for, unused, when `coarser` goes
-    if (k.short_of_target && opts.fill.search_min_region && opts.paint.target_psnr > 0 &&
-        opts.fill.min_region_pixels < kMergedRegionPixels) {
-        // The cheapest outline again with small regions merged (kMergedRegionPixels).
-        FillOptions t = opts.fill;
-        t.search_tolerance = false;
-        t.trace.epsilon = k.fill.tolerance;
-        t.trace.smooth = k.fill.smooth;
-        t.min_region_pixels = kMergedRegionPixels;
-        auto merged = paint_key(rgb, model, renderer, setup, opts, t, index);
-        if (!merged) return merged.error();
-        if (std::getenv("SPT_CARTOON_DEBUG"))
-            std::fprintf(stderr, "key frame %u: min region %d cost %.0f, %d cost %.0f\n", index, k.fill.min_region,
-                         frame_cost(k.frame), merged->fill.min_region, frame_cost(merged->frame));
-        if (frame_cost(merged->frame) < frame_cost(k.frame)) k = std::move(*merged);
+    if (k.short_of_target && opts.fill.search_min_region && opts.paint.target_psnr > 0) {
+        // The cheapest outline again with each of kMinRegionTrials (side by side with threads).
+        auto with_min_region = [&](int pixels) {
+            FillOptions t = opts.fill;
+            t.search_tolerance = false;
+            t.trace.epsilon = k.fill.tolerance;
+            t.trace.smooth = k.fill.smooth;
+            t.min_region_pixels = pixels;
+            return paint_key(rgb, model, renderer, setup, opts, t, index);
+        };
+        auto first = std::async(parallel ? std::launch::async : std::launch::deferred, with_min_region, kMinRegionTrials[0]);
+        auto second = with_min_region(kMinRegionTrials[1]);
+        auto tried = first.get();
+        for (Result<KeyFrame>* t : {&tried, &second}) {
+            if (!*t) return t->error();
+            if (std::getenv("SPT_CARTOON_DEBUG"))
+                std::fprintf(stderr, "key frame %u: min region %d cost %.0f, %d cost %.0f\n", index, k.fill.min_region,
+                             frame_cost(k.frame), (**t).fill.min_region, frame_cost((**t).frame));
+            if (frame_cost((**t).frame) < frame_cost(k.frame)) k = std::move(**t);
+        }
     }
     return k;
 }

@@ -15,14 +15,15 @@
 
 namespace spt::cartoon {
 
-// The smallest region a trial painting short of its target keeps (FillOptions::min_region_pixels;
-// smaller ones join their neighbours), beside the default 3: compressed video's noise and ringing
-// break its colours into many small regions, each a polygon of its own, where the residual
-// stamps cost less; text's small regions are parts of its letters. Bytes at 36 dB with 3 / 6 / 12
-// / 24: butterfly frame 40 17,316 / 14,904 / 13,330 / 12,791, its 12 frames 37,613 / 34,464 /
-// 31,764 / 36,916; taffy frame 30 21,283 / 21,450 / 21,616 / 24,826, its 12 frames 207,271 at 3
-// and 216,189 at 12.
-constexpr int kMergedRegionPixels = 12;
+// The smallest regions trial paintings short of their target keep (FillOptions::min_region_pixels;
+// smaller ones join their neighbours), beside the default 3; the smallest file wins. Compressed
+// video's noise and ringing break its colours into many small regions, each a polygon of its own,
+// where the residual stamps cost less; text's small regions are parts of its letters, and the
+// stamps that replace them cost more. Bytes at 36 dB with 1 / 3 / 6 / 12 / 24 (every frame):
+// butterfly frame 40 19,910 / 17,316 / 14,904 / 13,330 / 12,791, its 12 frames - / 37,613 /
+// 34,464 / 31,764 / 36,916; taffy frame 30 20,347 / 21,283 / 21,450 / 21,616 / 24,826, its 12
+// frames 201,155 / 207,271 / - / 216,189; the star within 0.5%.
+constexpr int kMinRegionTrials[] = {1, 12};
 
 struct FillOptions {
     PaletteOptions palette;
@@ -30,7 +31,7 @@ struct FillOptions {
     // Still pictures with a PSNR target: try coarser outlines first (cartoon_paint.hpp).
     bool search_tolerance = true;
     int min_region_pixels = 3;          // smaller components join their neighbours
-    // Short of a PSNR target, a still and a sequence's key frame also try kMergedRegionPixels.
+    // Short of a PSNR target, a still and a sequence's key frame also try kMinRegionTrials.
     bool search_min_region = true;
     std::vector<uint8_t> grids{4, 8};   // supersampling grids tried; the least error wins
     // Bound on the polygons' rendering work (SPEC.md 10), well inside the readers' 2^28.

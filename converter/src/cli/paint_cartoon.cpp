@@ -204,23 +204,34 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
             best_opts = trials[pick].opts;
         }
     }
-    // Still short: the chosen outline again with small regions merged (kMergedRegionPixels), the
-    // smaller file written.
+    // Still short: the chosen outline again with each of cartoon::kMinRegionTrials (side by side
+    // with threads), the smallest file written.
     if (po.target_psnr > 0 && o.target_bytes == 0 && o.min_region == 0 && best.st.fill_psnr < po.target_psnr) {
-        PaintCommandOptions merged_opts = best_opts;
-        merged_opts.min_region = cartoon::kMergedRegionPixels;
-        Still merged = paint_still(merged_opts, model, setup, **renderer, po);
-        auto a = io::TrialOutput::create(o.output);
-        auto b = io::TrialOutput::create(o.output);
-        if (!a) return fail(a.error().message);
-        if (!b) return fail(b.error().message);
-        auto now = write_still(best_opts, setup, po, best, &*a);
+        auto size_of = [&](const PaintCommandOptions& opts, const Still& s) -> Result<uint64_t> {
+            auto out = io::TrialOutput::create(o.output);
+            if (!out) return out.error();
+            return write_still(opts, setup, po, s, &*out);
+        };
+        auto now = size_of(best_opts, best);
         if (!now) return fail(now.error().message);
-        auto then = write_still(merged_opts, setup, po, merged, &*b);
-        if (!then) return fail(then.error().message);
-        if (*then < *now) {
-            best = std::move(merged);
-            best_opts = merged_opts;
+        uint64_t smallest = *now;
+        auto attempt = [&](int pixels) {
+            PaintCommandOptions t = best_opts;
+            t.min_region = pixels;
+            return std::make_pair(t, paint_still(t, model, setup, **renderer, po));
+        };
+        const bool parallel = paint::resolve_threads(o.paint.threads) > 1;
+        auto first = std::async(parallel ? std::launch::async : std::launch::deferred, attempt, cartoon::kMinRegionTrials[0]);
+        auto second = attempt(cartoon::kMinRegionTrials[1]);
+        auto tried = first.get();
+        for (auto* t : {&tried, &second}) {
+            auto bytes = size_of(t->first, t->second);
+            if (!bytes) return fail(bytes.error().message);
+            if (*bytes < smallest) {
+                smallest = *bytes;
+                best = std::move(t->second);
+                best_opts = t->first;
+            }
         }
     }
     auto written = write_still(best_opts, setup, po, best, nullptr);

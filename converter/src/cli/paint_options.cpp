@@ -153,9 +153,10 @@ void declare(Args& a, bool plan) {
                                         "key frame also tries 0.25 px of smoothing; the smallest is kept")
         .option("min-region", "PX", "--style cartoon: colour regions smaller than PX pixels (1..100000) join "
                                     "their neighbours before they are traced. Default: 3, but short of "
-                                    "--target-psnr a still and a sequence's key frame also try 12 and keep the "
-                                    "smaller: compressed video's noise makes many small regions, whose polygons "
-                                    "cost more than the stamps that replace them")
+                                    "--target-psnr a still and a sequence's key frame also try 1 and 12 and keep "
+                                    "the smallest: compressed video's noise makes many small regions, whose "
+                                    "polygons cost more than the stamps that replace them; text's are parts of "
+                                    "its letters")
         .flag("no-lines", "--style cartoon: trace thin regions as polygons only. By default a thin region "
                           "whose centreline curves are as close and smaller is drawn as lines: anti-aliased "
                           "curves with widths (format 1.4; Grease Pencil line strokes)")
