@@ -64,14 +64,19 @@ def compare(spt, a, b):
     return d["psnr"] or 99.0, d["ssim"]
 
 
-def prepare(media, out, frames):
-    """Each clip as a folder of flattened RGB PNGs d/f.0000.png ..., and its still. A folder per
-    frame count (NAME-Nf): a sequence is every file of its folder."""
+def prepare(media, out, frames, wanted):
+    """Each clip of `wanted` as a folder of flattened RGB PNGs d/f.0000.png ..., and its still. A
+    folder per frame count (NAME-Nf): a sequence is every file of its folder."""
     clips = []
     for name, still in (("star", 30), ("taffy", 30)):
+        if name not in wanted:
+            continue
+        src = os.path.join(media, "cartoon", name)
+        have = len([f for f in os.listdir(src) if f.endswith(".png")])
+        if frames > have:
+            sys.exit(f"cartoon_bench: {src} has {have} frames; --frames {frames} asks for more")
         d = os.path.join(out, f"{name}-{frames}f")
         os.makedirs(d, exist_ok=True)
-        src = os.path.join(media, "cartoon", name)
         for i in range(frames):
             dst = os.path.join(d, f"f.{i:04d}.png")
             if not os.path.exists(dst):
@@ -84,11 +89,16 @@ def prepare(media, out, frames):
                "color=white,format=rgb24[b];[b][0]scale2ref[b][f];[b][f]overlay=format=auto:shortest=1,format=rgb24",
                "-frames:v", "1", s)
         clips.append((name, d, s))
+    if "butterfly" not in wanted:
+        return clips
     d = os.path.join(out, f"butterfly-{frames}f")
     os.makedirs(d, exist_ok=True)
     avi = os.path.join(media, "video", "butterfly-cartoon.avi")
     if not os.path.exists(os.path.join(d, "f.0000.png")):
         ff("-i", avi, "-frames:v", str(frames), "-pix_fmt", "rgb24", "-start_number", "0", os.path.join(d, "f.%04d.png"))
+    have = len([f for f in os.listdir(d) if f.endswith(".png")])
+    if have < frames:
+        sys.exit(f"cartoon_bench: {avi} has {have} frames; --frames {frames} asks for more")
     s = os.path.join(out, "butterfly-still.png")
     if not os.path.exists(s):
         ff("-i", avi, "-vf", "select=eq(n\\,40)", "-frames:v", "1", "-pix_fmt", "rgb24", s)
@@ -291,7 +301,7 @@ def main():
     if not has_aom and "av1" in a.codecs.split(","):
         print("AV1: this ffmpeg has no libaom-av1 encoder; AV1 rows left out")
     os.makedirs(a.out, exist_ok=True)
-    clips = prepare(a.media, a.out, a.frames)
+    clips = prepare(a.media, a.out, a.frames, a.clips.split(","))
     print(f"target {a.target} dB; spt: whole file, x265: raw HEVC stream, av1: raw OBU stream, potrace: SVG"
           f"; s/frame: painting time, median of {a.repeat}")
     print(f"{'clip':16} {'coder':26} {'bytes':>9} {'PSNR':>7} {'SSIM':>7} {'s/frame':>8}")
