@@ -61,9 +61,10 @@ spt::cartoon::SequenceReport paint(const TempDir& dir, const std::string& out, d
     o.paint.target_psnr = target;
     o.paint.threads = 2;
     o.fill.trace.upsample = 4;  // as the CLI paints sequences
-    // The key frame keeps its small regions (no merged trial): these tests count the stamps and
-    // polygons the inter frames keep and add against a key frame that needs stamps.
+    // The key frame keeps its small regions and its palette (no trials): these tests count the
+    // stamps and polygons the inter frames keep and add against a key frame that needs stamps.
     o.fill.search_min_region = false;
+    o.fill.search_palette = false;
     spt::cartoon::SequenceReport r;
     const spt::Status s = spt::cartoon::paint_sequence(o, r);
     EXPECT_TRUE(s) << (s ? "" : s.error().message);

@@ -172,7 +172,7 @@ TEST(PlanCli, CartoonPlansPaintCartoonShots) {
     }
     const std::string seq = (d.path / "seq" / "s.####.png").string(), plan = d.file("plan.json");
     RunResult r = run_spt(d, {"plan", seq, "-o", plan, "--style", "cartoon", "--target-psnr", "34", "--max-task-frames",
-                              "6", "--seed", "5", "--min-region", "5", "--progress", "none"});
+                              "6", "--seed", "5", "--min-region", "5", "--min-color-share", "0.002", "--progress", "none"});
     ASSERT_EQ(r.code, 0) << r.err;
     auto p = spt::plan::read_plan(plan);
     ASSERT_TRUE(p.ok()) << p.error().message;
@@ -182,6 +182,9 @@ TEST(PlanCli, CartoonPlansPaintCartoonShots) {
     const auto mr = std::find(p->paint_args.begin(), p->paint_args.end(), "--min-region");
     ASSERT_TRUE(mr != p->paint_args.end() && mr + 1 != p->paint_args.end()) << "the cartoon options travel with the plan";
     EXPECT_EQ(*(mr + 1), "5");
+    const auto cs = std::find(p->paint_args.begin(), p->paint_args.end(), "--min-color-share");
+    ASSERT_TRUE(cs != p->paint_args.end() && cs + 1 != p->paint_args.end());
+    EXPECT_EQ(*(cs + 1), "0.002");
     r = run_spt(d, {"paint", "--plan", plan, "-o", d.file("whole.spt"), "--progress", "none"});
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err, "") << "the shots join without a warning";

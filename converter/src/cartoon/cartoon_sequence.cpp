@@ -89,8 +89,8 @@ Result<KeyFrame> paint_key(const cv::Mat& rgb, const paint::ImageView& model, co
 // (kShortKeySmooth): stamps make up what the polygons miss, and which outline trades vertices for
 // stamps best depends on the picture; the cheapest key frame decides it for the interval. With
 // threads the coarser painting runs beside the first (unused when that one reaches the target).
-Result<KeyFrame> choose_key(const cv::Mat& rgb, const paint::ImageView& model, const Renderer& renderer,
-                            const paint::PaintSetup& setup, const SequenceOptions& opts, uint32_t index, bool parallel) {
+Result<KeyFrame> choose_outline(const cv::Mat& rgb, const paint::ImageView& model, const Renderer& renderer,
+                                const paint::PaintSetup& setup, const SequenceOptions& opts, uint32_t index, bool parallel) {
     const bool may_try = opts.fill.search_tolerance && opts.paint.target_psnr > 0;
     auto coarser = std::async(parallel && may_try ? std::launch::async : std::launch::deferred, [&] {
         FillOptions t = opts.fill;
@@ -142,6 +142,29 @@ Result<KeyFrame> choose_key(const cv::Mat& rgb, const paint::ImageView& model, c
             if (frame_cost((**t).frame) < frame_cost(k.frame)) k = std::move(**t);
         }
     }
+    return k;
+}
+
+// A key frame: its outline and smallest region chosen (choose_outline), and, short of its target,
+// the same choice with the sparser palette when that leaves colours out (kSparsePaletteShare),
+// kept when it reaches the target in fewer estimated bytes. The interval takes its palette.
+Result<KeyFrame> choose_key(const cv::Mat& rgb, const paint::ImageView& model, const Renderer& renderer,
+                            const paint::PaintSetup& setup, const SequenceOptions& opts, uint32_t index, bool parallel) {
+    auto k = choose_outline(rgb, model, renderer, setup, opts, index, parallel);
+    if (!k || !k->short_of_target || !opts.fill.search_palette || !(opts.paint.target_psnr > 0) ||
+        !sparse_palette_differs(rgb, opts.fill.palette))
+        return k;
+    SequenceOptions sparse = opts;
+    sparse.fill.palette.min_share = kSparsePaletteShare;
+    auto alt = choose_outline(rgb, model, renderer, setup, sparse, index, parallel);
+    if (!alt) return alt.error();
+    const double target = opts.paint.target_psnr;
+    if (std::getenv("SPT_CARTOON_DEBUG"))
+        std::fprintf(stderr, "key frame %u: %zu colours cost %.0f, %zu colours cost %.0f at %.2f dB\n", index,
+                     k->fill.palette.size(), frame_cost(k->frame), alt->fill.palette.size(), frame_cost(alt->frame),
+                     paint::psnr(model, alt->canvas.rgb.data()));
+    if (frame_cost(alt->frame) < frame_cost(k->frame) && paint::psnr(model, alt->canvas.rgb.data()) >= target - 0.005)
+        return alt;
     return k;
 }
 

@@ -173,4 +173,11 @@ cv::Mat label_pixels(const cv::Mat& rgb, const std::vector<cv::Vec3b>& palette) 
     return labels;
 }
 
+bool sparse_palette_differs(const cv::Mat& rgb, const PaletteOptions& opts) {
+    if (opts.min_share >= kSparsePaletteShare) return false;
+    PaletteOptions sparse = opts;
+    sparse.min_share = kSparsePaletteShare;
+    return find_palette(rgb, sparse).size() < find_palette(rgb, opts).size();
+}
+
 }  // namespace spt::cartoon

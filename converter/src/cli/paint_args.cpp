@@ -43,6 +43,7 @@ std::vector<std::string> paint_args(const PaintCommandOptions& o) {
         if (o.outline_tolerance > 0) opt("--outline-tolerance", exact(o.outline_tolerance));
         if (o.outline_smooth >= 0) opt("--outline-smooth", exact(o.outline_smooth));
         if (o.min_region > 0) opt("--min-region", std::to_string(o.min_region));
+        if (o.min_color_share > 0) opt("--min-color-share", exact(o.min_color_share));
         if (!o.lines) a.push_back("--no-lines");
     }
     if (o.set_sizes.empty()) {

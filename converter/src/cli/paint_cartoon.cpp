@@ -40,6 +40,10 @@ cartoon::FillOptions fill_options(const PaintCommandOptions& o) {
         f.min_region_pixels = o.min_region;
         f.search_min_region = false;
     }
+    if (o.min_color_share > 0) {
+        f.palette.min_share = o.min_color_share;
+        f.search_palette = false;
+    }
     return f;
 }
 
@@ -136,6 +140,93 @@ Result<uint64_t> write_still(const PaintCommandOptions& o, const paint::PaintSet
     return (*writer)->stats().total_bytes;
 }
 
+// The still painting of `o`'s options and, short of the target, the smallest file of the outline
+// and smallest-region trials below (each painted, coded to a trial file of its own and measured).
+struct Searched {
+    Still still;
+    PaintCommandOptions opts;
+    uint64_t bytes = 0;
+};
+
+Result<Searched> search_still(const PaintCommandOptions& o, const paint::ImageView& model, const paint::PaintSetup& setup,
+                              const Renderer& renderer, const paint::PaintOptions& po) {
+    Still best = paint_still(o, model, setup, renderer, po);
+    PaintCommandOptions best_opts = o;
+    // The polygons alone short of the target: stamps make up the rest, and which outline
+    // tolerance trades vertices for stamps best depends on the picture (36 dB, bytes at 0.25 /
+    // 0.35 / 0.5 px: taffy frame 30 25,931 / 29,760 / 39,899, frame 55 25,371 / 27,777 / 38,503,
+    // frame 0 19,807 / 18,211 / 20,585; butterfly frame 40 27,604 / 25,778 / 24,789, frame 120
+    // 29,603 / 27,773 / 26,344). The two others are painted too (side by side when there are
+    // threads; each coded to a trial file of its own), and the smallest file is written.
+    if (po.target_psnr > 0 && o.target_bytes == 0 && o.outline_tolerance == 0 && best.st.fill_psnr < po.target_psnr) {
+        struct Trial {
+            PaintCommandOptions opts;
+            Still still;
+            Result<uint64_t> bytes = uint64_t(0);
+        };
+        auto attempt = [&](double tol) {
+            Trial t{o, {}, uint64_t(0)};
+            t.opts.outline_tolerance = tol;  // 0: the default search, as painted above
+            // Smoothed by their tolerance unless told (36 dB, bytes unsmoothed / smoothed:
+            // taffy frame 30 at 0.25 px 23,202 / 21,667, butterfly frame 40 at 0.5 px 20,642 /
+            // 19,359; the 0.35 px default loses when smoothed, 22,923 / 24,365 on taffy).
+            if (tol > 0 && o.outline_smooth < 0) t.opts.outline_smooth = tol;
+            if (tol > 0) t.still = paint_still(t.opts, model, setup, renderer, po);
+            const Still& s = tol > 0 ? t.still : best;
+            auto out = io::TrialOutput::create(o.output);
+            t.bytes = out ? write_still(t.opts, setup, po, s, &*out) : Result<uint64_t>(out.error());
+            return t;
+        };
+        const bool parallel = paint::resolve_threads(o.paint.threads) > 1;
+        auto coarse = std::async(parallel ? std::launch::async : std::launch::deferred, attempt, 0.5);
+        Trial trials[3] = {attempt(0), attempt(0.25), coarse.get()};
+        size_t pick = 0;
+        for (size_t i = 0; i < 3; ++i) {
+            if (!trials[i].bytes) return trials[i].bytes.error();
+            if (*trials[i].bytes < *trials[pick].bytes) pick = i;
+        }
+        if (pick > 0) {
+            best = std::move(trials[pick].still);
+            best_opts = trials[pick].opts;
+        }
+    }
+    // Still short: the chosen outline again with each of cartoon::kMinRegionTrials (side by side
+    // with threads), the smallest file written.
+    if (po.target_psnr > 0 && o.target_bytes == 0 && o.min_region == 0 && best.st.fill_psnr < po.target_psnr) {
+        auto size_of = [&](const PaintCommandOptions& opts, const Still& s) -> Result<uint64_t> {
+            auto out = io::TrialOutput::create(o.output);
+            if (!out) return out.error();
+            return write_still(opts, setup, po, s, &*out);
+        };
+        auto now = size_of(best_opts, best);
+        if (!now) return now.error();
+        uint64_t smallest = *now;
+        auto attempt = [&](int pixels) {
+            PaintCommandOptions t = best_opts;
+            t.min_region = pixels;
+            return std::make_pair(t, paint_still(t, model, setup, renderer, po));
+        };
+        const bool parallel = paint::resolve_threads(o.paint.threads) > 1;
+        auto first = std::async(parallel ? std::launch::async : std::launch::deferred, attempt, cartoon::kMinRegionTrials[0]);
+        auto second = attempt(cartoon::kMinRegionTrials[1]);
+        auto tried = first.get();
+        for (auto* t : {&tried, &second}) {
+            auto bytes = size_of(t->first, t->second);
+            if (!bytes) return bytes.error();
+            if (*bytes < smallest) {
+                smallest = *bytes;
+                best = std::move(t->second);
+                best_opts = t->first;
+            }
+        }
+    }
+    auto out = io::TrialOutput::create(o.output);
+    if (!out) return out.error();
+    auto bytes = write_still(best_opts, setup, po, best, &*out);
+    if (!bytes) return bytes.error();
+    return Searched{std::move(best), std::move(best_opts), *bytes};
+}
+
 int paint_cartoon_still(const PaintCommandOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     io::ReadOptions ro;
@@ -164,76 +255,21 @@ int paint_cartoon_still(const PaintCommandOptions& o) {
         if (!psnr) return fail(psnr.error().message);
         po.target_psnr = *psnr;
     }
-    Still best = paint_still(o, model, setup, **renderer, po);
-    PaintCommandOptions best_opts = o;
-    // The polygons alone short of the target: stamps make up the rest, and which outline
-    // tolerance trades vertices for stamps best depends on the picture (36 dB, bytes at 0.25 /
-    // 0.35 / 0.5 px: taffy frame 30 25,931 / 29,760 / 39,899, frame 55 25,371 / 27,777 / 38,503,
-    // frame 0 19,807 / 18,211 / 20,585; butterfly frame 40 27,604 / 25,778 / 24,789, frame 120
-    // 29,603 / 27,773 / 26,344). The two others are painted too (side by side when there are
-    // threads; each coded to a trial file of its own), and the smallest file is written.
-    if (po.target_psnr > 0 && o.target_bytes == 0 && o.outline_tolerance == 0 && best.st.fill_psnr < po.target_psnr) {
-        struct Trial {
-            PaintCommandOptions opts;
-            Still still;
-            Result<uint64_t> bytes = uint64_t(0);
-        };
-        auto attempt = [&](double tol) {
-            Trial t{o, {}, uint64_t(0)};
-            t.opts.outline_tolerance = tol;  // 0: the default search, as painted above
-            // Smoothed by their tolerance unless told (36 dB, bytes unsmoothed / smoothed:
-            // taffy frame 30 at 0.25 px 23,202 / 21,667, butterfly frame 40 at 0.5 px 20,642 /
-            // 19,359; the 0.35 px default loses when smoothed, 22,923 / 24,365 on taffy).
-            if (tol > 0 && o.outline_smooth < 0) t.opts.outline_smooth = tol;
-            if (tol > 0) t.still = paint_still(t.opts, model, setup, **renderer, po);
-            const Still& s = tol > 0 ? t.still : best;
-            auto out = io::TrialOutput::create(o.output);
-            t.bytes = out ? write_still(t.opts, setup, po, s, &*out) : Result<uint64_t>(out.error());
-            return t;
-        };
-        const bool parallel = paint::resolve_threads(o.paint.threads) > 1;
-        auto coarse = std::async(parallel ? std::launch::async : std::launch::deferred, attempt, 0.5);
-        Trial trials[3] = {attempt(0), attempt(0.25), coarse.get()};
-        size_t pick = 0;
-        for (size_t i = 0; i < 3; ++i) {
-            if (!trials[i].bytes) return fail(trials[i].bytes.error().message);
-            if (*trials[i].bytes < *trials[pick].bytes) pick = i;
-        }
-        if (pick > 0) {
-            best = std::move(trials[pick].still);
-            best_opts = trials[pick].opts;
-        }
+    auto searched = search_still(o, model, setup, **renderer, po);
+    if (!searched) return fail(searched.error().message);
+    // Still short: the whole search again with the sparser palette when it leaves colours out
+    // (cartoon::kSparsePaletteShare), kept when it reaches the target in fewer bytes.
+    const cv::Mat src(int(H), int(W), CV_8UC3, img->rgb.data());
+    if (po.target_psnr > 0 && o.target_bytes == 0 && o.min_color_share == 0 &&
+        searched->still.st.fill_psnr < po.target_psnr && cartoon::sparse_palette_differs(src, fill_options(o).palette)) {
+        PaintCommandOptions sparse = o;
+        sparse.min_color_share = cartoon::kSparsePaletteShare;
+        auto alt = search_still(sparse, model, setup, **renderer, po);
+        if (!alt) return fail(alt.error().message);
+        if (alt->bytes < searched->bytes && alt->still.st.stamps.psnr >= po.target_psnr - 0.005) searched = std::move(alt);
     }
-    // Still short: the chosen outline again with each of cartoon::kMinRegionTrials (side by side
-    // with threads), the smallest file written.
-    if (po.target_psnr > 0 && o.target_bytes == 0 && o.min_region == 0 && best.st.fill_psnr < po.target_psnr) {
-        auto size_of = [&](const PaintCommandOptions& opts, const Still& s) -> Result<uint64_t> {
-            auto out = io::TrialOutput::create(o.output);
-            if (!out) return out.error();
-            return write_still(opts, setup, po, s, &*out);
-        };
-        auto now = size_of(best_opts, best);
-        if (!now) return fail(now.error().message);
-        uint64_t smallest = *now;
-        auto attempt = [&](int pixels) {
-            PaintCommandOptions t = best_opts;
-            t.min_region = pixels;
-            return std::make_pair(t, paint_still(t, model, setup, **renderer, po));
-        };
-        const bool parallel = paint::resolve_threads(o.paint.threads) > 1;
-        auto first = std::async(parallel ? std::launch::async : std::launch::deferred, attempt, cartoon::kMinRegionTrials[0]);
-        auto second = attempt(cartoon::kMinRegionTrials[1]);
-        auto tried = first.get();
-        for (auto* t : {&tried, &second}) {
-            auto bytes = size_of(t->first, t->second);
-            if (!bytes) return fail(bytes.error().message);
-            if (*bytes < smallest) {
-                smallest = *bytes;
-                best = std::move(t->second);
-                best_opts = t->first;
-            }
-        }
-    }
+    Still best = std::move(searched->still);
+    const PaintCommandOptions best_opts = std::move(searched->opts);
     auto written = write_still(best_opts, setup, po, best, nullptr);
     if (!written) return fail(written.error().message);
     const uint64_t bytes = *written;

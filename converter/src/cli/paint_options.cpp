@@ -157,6 +157,11 @@ void declare(Args& a, bool plan) {
                                     "the smallest: compressed video's noise makes many small regions, whose "
                                     "polygons cost more than the stamps that replace them; text's are parts of "
                                     "its letters")
+        .option("min-color-share", "F", "--style cartoon: a flat colour covers at least this share of the "
+                                        "pixels (0.000001..0.5, and 8 pixels). Default: 0.0001, but short of "
+                                        "--target-psnr a still and a sequence's key frame also try 0.001 when that "
+                                        "leaves colours out, and keep the smaller: compressed video's ringing and "
+                                        "blends make colours of their own that take pixels from the flat fills")
         .flag("no-lines", "--style cartoon: trace thin regions as polygons only. By default a thin region "
                           "whose centreline curves are as close and smaller is drawn as lines: anti-aliased "
                           "curves with widths (format 1.4; Grease Pencil line strokes)")
@@ -305,9 +310,11 @@ int parse_paint_options(int argc, char** argv, PaintCommandOptions& o, const cha
             return bad("--min-region: expected 1..100000 pixels, got '" + v("min-region") + "'");
         o.min_region = int(m);
     }
+    if (a.has("min-color-share") && !parse_double(v("min-color-share"), 1e-6, 0.5, o.min_color_share))
+        return bad("--min-color-share: expected 0.000001..0.5, got '" + v("min-color-share") + "'");
     o.lines = !a.has("no-lines");
     // The cartoon painter's options do nothing for the default painter: said, not ignored.
-    for (const char* f : {"outline-tolerance", "outline-smooth", "min-region", "no-lines"})
+    for (const char* f : {"outline-tolerance", "outline-smooth", "min-region", "min-color-share", "no-lines"})
         if (a.has(f) && o.style != "cartoon") return bad(std::string("--") + f + " applies to --style cartoon only");
     long n = 0;
     if (a.has("seed") && !parse_u64(v("seed"), o.paint.seed))
@@ -439,6 +446,7 @@ std::string PaintCommandOptions::canonical() const {
         s << " style=" << style << " outline-tolerance=" << outline_tolerance << " lines=" << (lines ? 1 : 0);
         if (outline_smooth >= 0) s << " outline-smooth=" << outline_smooth;  // files without it keep theirs
         if (min_region > 0) s << " min-region=" << min_region;
+        if (min_color_share > 0) s << " min-color-share=" << min_color_share;
     }
     // Only when not the defaults, so that the files of earlier versions keep their bytes.
     if (color_encoding != "auto") s << " color-encoding=" << color_encoding;

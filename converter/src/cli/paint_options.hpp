@@ -27,6 +27,7 @@ struct PaintCommandOptions {
     double outline_tolerance = 0;         // --outline-tolerance PX (cartoon): 0 = the default
     double outline_smooth = -1;           // --outline-smooth PX (cartoon): -1 = the default
     int min_region = 0;                   // --min-region PX (cartoon): 0 = the default
+    double min_color_share = 0;           // --min-color-share F (cartoon): 0 = the default
     bool lines = true;                    // cartoon: thin regions may be curves (--no-lines: not)
     paint::PaintOptions paint;            // seed, threads, limits, threshold, orient, lambda, ...
     int sets = 6;                         // --sets, when --set-sizes is not given
