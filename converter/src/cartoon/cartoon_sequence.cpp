@@ -146,25 +146,25 @@ Result<KeyFrame> choose_outline(const cv::Mat& rgb, const paint::ImageView& mode
 }
 
 // A key frame: its outline and smallest region chosen (choose_outline), and, short of its target,
-// the same choice with the sparser palette when that leaves colours out (kSparsePaletteShare),
-// kept when it reaches the target in fewer estimated bytes. The interval takes its palette.
+// the same choice with each sparser palette in turn (kSparsePaletteShares) while it leaves
+// colours out and reaches the target in fewer estimated bytes. The interval takes its palette.
 Result<KeyFrame> choose_key(const cv::Mat& rgb, const paint::ImageView& model, const Renderer& renderer,
                             const paint::PaintSetup& setup, const SequenceOptions& opts, uint32_t index, bool parallel) {
     auto k = choose_outline(rgb, model, renderer, setup, opts, index, parallel);
-    if (!k || !k->short_of_target || !opts.fill.search_palette || !(opts.paint.target_psnr > 0) ||
-        !sparse_palette_differs(rgb, opts.fill.palette))
-        return k;
+    if (!k || !k->short_of_target || !opts.fill.search_palette || !(opts.paint.target_psnr > 0)) return k;
     SequenceOptions sparse = opts;
-    sparse.fill.palette.min_share = kSparsePaletteShare;
-    auto alt = choose_outline(rgb, model, renderer, setup, sparse, index, parallel);
-    if (!alt) return alt.error();
-    const double target = opts.paint.target_psnr;
-    if (std::getenv("SPT_CARTOON_DEBUG"))
-        std::fprintf(stderr, "key frame %u: %zu colours cost %.0f, %zu colours cost %.0f at %.2f dB\n", index,
-                     k->fill.palette.size(), frame_cost(k->frame), alt->fill.palette.size(), frame_cost(alt->frame),
-                     paint::psnr(model, alt->canvas.rgb.data()));
-    if (frame_cost(alt->frame) < frame_cost(k->frame) && paint::psnr(model, alt->canvas.rgb.data()) >= target - 0.005)
-        return alt;
+    for (double share : kSparsePaletteShares) {
+        if (!sparser_palette_has_fewer_colours(rgb, sparse.fill.palette, share)) break;
+        sparse.fill.palette.min_share = share;
+        auto alt = choose_outline(rgb, model, renderer, setup, sparse, index, parallel);
+        if (!alt) return alt.error();
+        const double p = paint::psnr(model, alt->canvas.rgb.data());
+        if (std::getenv("SPT_CARTOON_DEBUG"))
+            std::fprintf(stderr, "key frame %u: %zu colours cost %.0f, %zu colours cost %.0f at %.2f dB\n", index,
+                         k->fill.palette.size(), frame_cost(k->frame), alt->fill.palette.size(), frame_cost(alt->frame), p);
+        if (!(frame_cost(alt->frame) < frame_cost(k->frame) && p >= opts.paint.target_psnr - 0.005)) break;
+        k = std::move(alt);
+    }
     return k;
 }
 

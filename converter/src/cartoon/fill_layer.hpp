@@ -33,7 +33,7 @@ struct FillOptions {
     int min_region_pixels = 3;          // smaller components join their neighbours
     // Short of a PSNR target, a still and a sequence's key frame also try kMinRegionTrials.
     bool search_min_region = true;
-    // ... and kSparsePaletteShare (palette.hpp) when that palette differs.
+    // ... and kSparsePaletteShares (palette.hpp) while they leave colours out and win.
     bool search_palette = true;
     std::vector<uint8_t> grids{4, 8};   // supersampling grids tried; the least error wins
     // Bound on the polygons' rendering work (SPEC.md 10), well inside the readers' 2^28.

@@ -173,10 +173,10 @@ cv::Mat label_pixels(const cv::Mat& rgb, const std::vector<cv::Vec3b>& palette) 
     return labels;
 }
 
-bool sparse_palette_differs(const cv::Mat& rgb, const PaletteOptions& opts) {
-    if (opts.min_share >= kSparsePaletteShare) return false;
+bool sparser_palette_has_fewer_colours(const cv::Mat& rgb, const PaletteOptions& opts, double share) {
+    if (opts.min_share >= share) return false;
     PaletteOptions sparse = opts;
-    sparse.min_share = kSparsePaletteShare;
+    sparse.min_share = share;
     return find_palette(rgb, sparse).size() < find_palette(rgb, opts).size();
 }
 

@@ -159,9 +159,10 @@ void declare(Args& a, bool plan) {
                                     "its letters")
         .option("min-color-share", "F", "--style cartoon: a flat colour covers at least this share of the "
                                         "pixels (0.000001..0.5, and 8 pixels). Default: 0.0001, but short of "
-                                        "--target-psnr a still and a sequence's key frame also try 0.001 when that "
-                                        "leaves colours out, and keep the smaller: compressed video's ringing and "
-                                        "blends make colours of their own that take pixels from the flat fills")
+                                        "--target-psnr a still and a sequence's key frame also try 0.001, then 0.01, "
+                                        "while that leaves colours out and the file comes out smaller: compressed "
+                                        "video's ringing and blends make colours of their own that take pixels from "
+                                        "the flat fills")
         .flag("no-lines", "--style cartoon: trace thin regions as polygons only. By default a thin region "
                           "whose centreline curves are as close and smaller is drawn as lines: anti-aliased "
                           "curves with widths (format 1.4; Grease Pencil line strokes)")
