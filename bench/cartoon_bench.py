@@ -197,14 +197,16 @@ def painter_options(spt, path):
 
 
 def fills_rows(spt, cartoon_spt, src, base, threads):
-    """A still's flat-colour layer: the cartoon painting's own outlines (its tolerance and
-    smoothing and smallest region from painter.options), at a PSNR target every fill layer
-    reaches, so without stamps; and x265 444p at that layer's PSNR. Where x265 needs fewer bytes
-    even here, the source's edges and fills alone cost more as polygons than as blocks."""
+    """A still's flat-colour layer: the cartoon painting's own outlines (its tolerance,
+    smoothing, smallest region and palette share from painter.options), at a PSNR target every
+    fill layer reaches, so without stamps; and x265 444p at that layer's PSNR. Where x265 needs
+    fewer bytes even here, the source's edges and fills alone cost more as polygons than as
+    blocks."""
     opts = painter_options(spt, cartoon_spt)
     extra = ["--style", "cartoon"] + ([] if opts.get("lines", "1") == "1" else ["--no-lines"])
-    if "min-region" in opts:
-        extra += ["--min-region", opts["min-region"]]
+    for name in ("min-region", "min-color-share"):
+        if name in opts:
+            extra += ["--" + name, opts[name]]
     if opts["stamps"] == "1":  # the polygons fell short: the outline it chose (0: the default 0.35 px)
         tolerance = opts["outline-tolerance"] if float(opts["outline-tolerance"]) > 0 else "0.35"
         extra += ["--target-psnr", "10", "--outline-tolerance", tolerance,
