@@ -140,20 +140,27 @@ TEST(CartoonPaint, SmoothingANoisyEdgeTakesFewerVertices) {
     EXPECT_GE(b.stats.fill_psnr, a.stats.fill_psnr - 0.3) << "smoothed " << b.stats.vertices << " vertices, unsmoothed " << a.stats.vertices;
 }
 
+// A yellow ellipse on white under a black outline `eighths` / 8 px wide in four pieces (70 of
+// every 90 degrees), anti-aliased as a vector tool renders it (drawn at 8x, box-filtered down).
+cv::Mat outlined_ellipse(int eighths) {
+    const int k = 8, w = 120, h = 100;
+    cv::Mat big(h * k, w * k, CV_8UC3, cv::Scalar(255, 255, 255));
+    const cv::Point centre(60 * k, 50 * k);
+    const cv::Size axes(45 * k, 35 * k);
+    cv::ellipse(big, centre, axes, 20, 0, 360, cv::Scalar(0, 255, 255), cv::FILLED);
+    for (int a = 0; a < 360; a += 90) cv::ellipse(big, centre, axes, 20, a, a + 70, cv::Scalar(0, 0, 0), eighths);
+    cv::Mat art;
+    cv::resize(big, art, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+    return art;
+}
+
 // A fill under an outline thinner than a pixel (synfig's star as it morphs: 0.6 px of black
 // between the yellow and the white, broken where it thins, so its pieces are drawn after the
 // fill) must not reach out under a piece's far side, where the source shows the ground through
 // it: TraceOptions::beside_ink gives the fill the share of the uncovered rest that the source
 // gives it. Measured 35.1 dB against 29.5 dB without (0.875 px of black).
 TEST(CartoonPaint, AFillStopsUnderAThinOutline) {
-    const int k = 8, w = 120, h = 100;
-    cv::Mat big(h * k, w * k, CV_8UC3, cv::Scalar(255, 255, 255));
-    const cv::Point centre(60 * k, 50 * k);
-    const cv::Size axes(45 * k, 35 * k);
-    cv::ellipse(big, centre, axes, 20, 0, 360, cv::Scalar(0, 255, 255), cv::FILLED);
-    for (int a = 0; a < 360; a += 90) cv::ellipse(big, centre, axes, 20, a, a + 70, cv::Scalar(0, 0, 0), 7);  // 7/8 px
-    cv::Mat art;
-    cv::resize(big, art, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+    const cv::Mat art = outlined_ellipse(7);  // 7/8 px
     spt::cartoon::FillOptions with;
     with.search_tolerance = false;
     spt::cartoon::FillOptions without = with;
@@ -172,14 +179,7 @@ TEST(CartoonPaint, AFillStopsUnderAThinOutline) {
 // vertices against 260 without, the fill layer at 36.09 against 36.18 dB (synfig's star as it
 // morphs: its fill 117 vertices against 373).
 TEST(CartoonPaint, AFillUnderAnOutlineEndsUnderItsMiddle) {
-    const int k = 8, w = 120, h = 100;
-    cv::Mat big(h * k, w * k, CV_8UC3, cv::Scalar(255, 255, 255));
-    const cv::Point centre(60 * k, 50 * k);
-    const cv::Size axes(45 * k, 35 * k);
-    cv::ellipse(big, centre, axes, 20, 0, 360, cv::Scalar(0, 255, 255), cv::FILLED);
-    for (int a = 0; a < 360; a += 90) cv::ellipse(big, centre, axes, 20, a, a + 70, cv::Scalar(0, 0, 0), 12);  // 1.5 px
-    cv::Mat art;
-    cv::resize(big, art, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+    const cv::Mat art = outlined_ellipse(12);  // 1.5 px
     spt::cartoon::FillOptions with;
     with.search_tolerance = false;
     with.lines = false;  // the outline as polygons: only the fill's vertices differ
@@ -275,14 +275,45 @@ TEST(CartoonCli, PainterlyOnlyOptionsAreRefusedByName) {
                             "--color-encoding", "srgb8", "--progress", "none"}).code, 0);
 }
 
-TEST(CartoonCli, MinRegionTakesAPixelCount) {
+// Frame 40 of the butterfly clip (MPEG-4: noise and ringing on every edge) as DIR/b40.png.
+void write_butterfly_frame_40(const TempDir& dir) {
+    cv::VideoCapture cap(std::string(SPT_MEDIA_DIR) + "/video/butterfly-cartoon.avi");
+    ASSERT_TRUE(cap.isOpened());
+    cv::Mat bgr, rgb;
+    for (int i = 0; i <= 40; ++i) ASSERT_TRUE(cap.read(bgr)) << "frame " << i;
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+    ASSERT_TRUE(spt::io::write_image(dir.file("b40.png"), uint32_t(rgb.cols), uint32_t(rgb.rows), rgb.data));
+}
+
+// `spt paint SRC -o DIR/OUT --style cartoon --target-psnr 36 --seed 1 EXTRA...`, which must
+// succeed without a warning: the file's bytes.
+std::string paint_at_36(const TempDir& dir, const std::string& src, const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"paint", src, "-o", dir.file(out), "--style", "cartoon", "--target-psnr", "36",
+                                     "--seed", "1", "--progress", "none"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_spt(dir, args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    return slurp(dir.file(out));
+}
+
+// The cartoon painter's numeric options out of their range are usage errors that name the
+// option, its range and the value, before anything is read or written.
+TEST(CartoonCli, NumericOptionsOutOfRangeAreSaid) {
     TempDir dir;
-    for (const char* bad : {"0", "-3", "1.5", "many", "100001"}) {
-        const auto r = run_spt(dir, {"paint", "x.png", "-o", dir.file("x.spt"), "--style", "cartoon", "--min-region", bad});
-        EXPECT_EQ(r.code, 2) << bad;
-        EXPECT_NE(r.err.find("--min-region: expected 1..100000 pixels, got '" + std::string(bad) + "'"), std::string::npos) << r.err;
-        EXPECT_FALSE(fs::exists(dir.file("x.spt")));
-    }
+    struct Case {
+        const char* option;
+        const char* range;
+        std::vector<const char*> bad;
+    };
+    for (const Case& c : {Case{"--min-region", "1..100000 pixels", {"0", "-3", "1.5", "many", "100001"}},
+                          Case{"--min-color-share", "0.000001..0.5", {"0", "-0.1", "0.6", "1e-9", "half"}}})
+        for (const char* bad : c.bad) {
+            const auto r = run_spt(dir, {"paint", "x.png", "-o", dir.file("x.spt"), "--style", "cartoon", c.option, bad});
+            EXPECT_EQ(r.code, 2) << c.option << " " << bad;
+            EXPECT_NE(r.err.find(std::string(c.option) + ": expected " + c.range + ", got '" + bad + "'"), std::string::npos) << r.err;
+            EXPECT_FALSE(fs::exists(dir.file("x.spt")));
+        }
 }
 
 // Compressed video's noise and ringing break its colours into many small regions, each a polygon
@@ -293,20 +324,8 @@ TEST(CartoonCli, MinRegionTakesAPixelCount) {
 // --min-color-share 0.0001); taffy's frame 30 20,342 with 1 against 21,291.
 TEST(CartoonCli, AStillShortOfItsTargetTriesOtherSmallestRegions) {
     TempDir dir;
-    cv::VideoCapture cap(std::string(SPT_MEDIA_DIR) + "/video/butterfly-cartoon.avi");
-    ASSERT_TRUE(cap.isOpened());
-    cv::Mat bgr, rgb;
-    for (int i = 0; i <= 40; ++i) ASSERT_TRUE(cap.read(bgr)) << "frame " << i;
-    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-    ASSERT_TRUE(spt::io::write_image(dir.file("b40.png"), uint32_t(rgb.cols), uint32_t(rgb.rows), rgb.data));
-    auto paint = [&](const std::string& out, std::vector<std::string> extra) {
-        std::vector<std::string> args = {"paint", dir.file("b40.png"), "-o", dir.file(out), "--style", "cartoon",
-                                         "--target-psnr", "36", "--seed", "1", "--progress", "none"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const auto r = run_spt(dir, args);
-        EXPECT_EQ(r.code, 0) << r.err;
-        return slurp(dir.file(out));
-    };
+    ASSERT_NO_FATAL_FAILURE(write_butterfly_frame_40(dir));
+    auto paint = [&](const std::string& out, std::vector<std::string> extra) { return paint_at_36(dir, dir.file("b40.png"), out, extra); };
     // The palette as it was (the sparser palettes' trials are tested below).
     const std::string chosen = paint("auto.spt", {"--min-color-share", "0.0001"}),
                       small = paint("three.spt", {"--min-region", "3", "--min-color-share", "0.0001"});
@@ -319,28 +338,10 @@ TEST(CartoonCli, AStillShortOfItsTargetTriesOtherSmallestRegions) {
     std::printf("butterfly frame 40: %zu bytes, %zu with --min-region 3\n", chosen.size(), small.size());
 
     const std::string taffy = std::string(SPT_MEDIA_DIR) + "/cartoon/taffy/f.0030.png";
-    auto paint_taffy = [&](const std::string& out, std::vector<std::string> extra) {
-        std::vector<std::string> args = {"paint", taffy, "-o", dir.file(out), "--style", "cartoon", "--target-psnr", "36",
-                                         "--seed", "1", "--progress", "none"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const auto r = run_spt(dir, args);
-        EXPECT_EQ(r.code, 0) << r.err;
-        return slurp(dir.file(out));
-    };
-    const std::string text = paint_taffy("taffy.spt", {}), text3 = paint_taffy("taffy3.spt", {"--min-region", "3"});
+    const std::string text = paint_at_36(dir, taffy, "taffy.spt", {}), text3 = paint_at_36(dir, taffy, "taffy3.spt", {"--min-region", "3"});
     EXPECT_LT(double(text.size()), 0.98 * double(text3.size())) << "--min-region 3: " << text3.size() << " bytes";
     EXPECT_NE(text.find("min-region=1"), std::string::npos) << "taffy keeps its letters' smallest parts";
     std::printf("taffy frame 30: %zu bytes, %zu with --min-region 3\n", text.size(), text3.size());
-}
-
-TEST(CartoonCli, MinColorShareTakesAShare) {
-    TempDir dir;
-    for (const char* bad : {"0", "-0.1", "0.6", "1e-9", "half"}) {
-        const auto r = run_spt(dir, {"paint", "x.png", "-o", dir.file("x.spt"), "--style", "cartoon", "--min-color-share", bad});
-        EXPECT_EQ(r.code, 2) << bad;
-        EXPECT_NE(r.err.find("--min-color-share: expected 0.000001..0.5, got '" + std::string(bad) + "'"), std::string::npos) << r.err;
-        EXPECT_FALSE(fs::exists(dir.file("x.spt")));
-    }
 }
 
 // Compressed video's ringing and blends pile into colours of their own that take pixels from
@@ -351,21 +352,8 @@ TEST(CartoonCli, MinColorShareTakesAShare) {
 // --min-color-share 0.0001. Taffy's two colours stay.
 TEST(CartoonCli, AStillShortOfItsTargetTriesASparserPalette) {
     TempDir dir;
-    cv::VideoCapture cap(std::string(SPT_MEDIA_DIR) + "/video/butterfly-cartoon.avi");
-    ASSERT_TRUE(cap.isOpened());
-    cv::Mat bgr, rgb;
-    for (int i = 0; i <= 40; ++i) ASSERT_TRUE(cap.read(bgr)) << "frame " << i;
-    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-    ASSERT_TRUE(spt::io::write_image(dir.file("b40.png"), uint32_t(rgb.cols), uint32_t(rgb.rows), rgb.data));
-    auto paint = [&](const std::string& out, std::vector<std::string> extra) {
-        std::vector<std::string> args = {"paint", dir.file("b40.png"), "-o", dir.file(out), "--style", "cartoon",
-                                         "--target-psnr", "36", "--seed", "1", "--progress", "none"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const auto r = run_spt(dir, args);
-        EXPECT_EQ(r.code, 0) << r.err;
-        EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
-        return slurp(dir.file(out));
-    };
+    ASSERT_NO_FATAL_FAILURE(write_butterfly_frame_40(dir));
+    auto paint = [&](const std::string& out, std::vector<std::string> extra) { return paint_at_36(dir, dir.file("b40.png"), out, extra); };
     const std::string chosen = paint("auto.spt", {}), dense = paint("dense.spt", {"--min-color-share", "0.0001"});
     EXPECT_LT(double(chosen.size()), 0.8 * double(dense.size())) << "--min-color-share 0.0001: " << dense.size() << " bytes";
     EXPECT_NE(chosen.find("min-color-share=0.01"), std::string::npos) << "painter.options records the sparser palette";

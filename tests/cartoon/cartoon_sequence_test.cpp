@@ -232,6 +232,22 @@ TEST(CartoonSequence, ButterflyLinesAreAntiAliasedCurvesAndSaveBytes) {
     }
 }
 
+namespace {
+
+// `spt paint MEDIA/SRC -o DIR/OUT --style cartoon --frames FRAMES --target-psnr 36 --seed 1
+// EXTRA...`, which must succeed without a warning.
+void paint_media_at_36(const TempDir& dir, const std::string& src, const std::string& frames, const std::string& out,
+                       const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"paint", std::string(SPT_MEDIA_DIR) + "/" + src, "-o", dir.file(out), "--style",
+                                     "cartoon", "--frames", frames, "--target-psnr", "36", "--seed", "1", "--progress", "none"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_spt(dir, args);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
+}  // namespace
+
 // A key frame whose polygons fall short of the target also tries outlines smoothed before they
 // are simplified, and the cheapest sets its interval's: the butterfly's (MPEG-4 noise on every
 // edge) key frame takes fewer bytes than with --outline-smooth 0 (measured estimates, frame 40:
@@ -240,13 +256,7 @@ TEST(CartoonSequence, ButterflyLinesAreAntiAliasedCurvesAndSaveBytes) {
 TEST(CartoonSequence, KeyFramesShortOfTheTargetTrySmoothedOutlines) {
     TempDir dir;
     auto paint = [&](const std::string& src, const std::string& frames, const std::string& out,
-                     std::vector<std::string> extra) {
-        std::vector<std::string> args = {"paint", std::string(SPT_MEDIA_DIR) + "/" + src, "-o", dir.file(out), "--style",
-                                         "cartoon", "--frames", frames, "--target-psnr", "36", "--seed", "1", "--progress", "none"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const auto r = run_spt(dir, args);
-        ASSERT_EQ(r.code, 0) << r.err;
-    };
+                     std::vector<std::string> extra) { paint_media_at_36(dir, src, frames, out, extra); };
     paint("video/butterfly-cartoon.avi", "40-41", "b.spt", {});
     paint("video/butterfly-cartoon.avi", "40-41", "b0.spt", {"--outline-smooth", "0"});
     auto b = spt::Reader::open(dir.file("b.spt"));
@@ -276,13 +286,7 @@ TEST(CartoonSequence, KeyFramesShortOfTheTargetTrySmoothedOutlines) {
 TEST(CartoonSequence, KeyFramesShortOfTheTargetTryOtherSmallestRegions) {
     TempDir dir;
     auto paint = [&](const std::string& src, const std::string& frames, const std::string& out,
-                     std::vector<std::string> extra) {
-        std::vector<std::string> args = {"paint", std::string(SPT_MEDIA_DIR) + "/" + src, "-o", dir.file(out), "--style",
-                                         "cartoon", "--frames", frames, "--target-psnr", "36", "--seed", "1", "--progress", "none"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const auto r = run_spt(dir, args);
-        ASSERT_EQ(r.code, 0) << r.err;
-    };
+                     std::vector<std::string> extra) { paint_media_at_36(dir, src, frames, out, extra); };
     paint("video/butterfly-cartoon.avi", "40-41", "b.spt", {"--min-color-share", "0.0001"});
     paint("video/butterfly-cartoon.avi", "40-41", "b3.spt", {"--min-region", "3", "--min-color-share", "0.0001"});
     const auto b = std::filesystem::file_size(dir.file("b.spt")), b3 = std::filesystem::file_size(dir.file("b3.spt"));
@@ -304,17 +308,8 @@ TEST(CartoonSequence, KeyFramesShortOfTheTargetTryOtherSmallestRegions) {
 // with --min-color-share 0.0001, every frame at the target.
 TEST(CartoonSequence, KeyFramesShortOfTheTargetTryASparserPalette) {
     TempDir dir;
-    const std::string clip = std::string(SPT_MEDIA_DIR) + "/video/butterfly-cartoon.avi";
-    auto paint = [&](const std::string& out, std::vector<std::string> extra) {
-        std::vector<std::string> args = {"paint", clip, "-o", dir.file(out), "--style", "cartoon", "--frames", "40-41",
-                                         "--target-psnr", "36", "--seed", "1", "--progress", "none"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const auto r = run_spt(dir, args);
-        ASSERT_EQ(r.code, 0) << r.err;
-        EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
-    };
-    paint("b.spt", {});
-    paint("dense.spt", {"--min-color-share", "0.0001"});
+    paint_media_at_36(dir, "video/butterfly-cartoon.avi", "40-41", "b.spt", {});
+    paint_media_at_36(dir, "video/butterfly-cartoon.avi", "40-41", "dense.spt", {"--min-color-share", "0.0001"});
     const auto b = std::filesystem::file_size(dir.file("b.spt")), dense = std::filesystem::file_size(dir.file("dense.spt"));
     EXPECT_LT(double(b), 0.85 * double(dense)) << "--min-color-share 0.0001: " << dense << " bytes";
     std::printf("butterfly 40-41: %ju bytes, %ju with --min-color-share 0.0001\n", uintmax_t(b), uintmax_t(dense));
