@@ -10,6 +10,7 @@
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/inter_frame.hpp"
+#include "cartoon/retrace_outline.hpp"
 #include "paint/worker_pool.hpp"
 #include "spt/concat.hpp"
 #include "spt/reader.hpp"
@@ -217,6 +218,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     std::vector<Stroke> live;
     std::vector<cv::Vec3b> palette;
     FillOptions fo = opts.fill;
+    RetraceTrials retrace;
     io::Image prev;
     Canvas canvas(W, H, opts.background);
     double psnr_sum = 0;
@@ -237,6 +239,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             fo.trace.epsilon = k.fill.tolerance;
             fo.trace.smooth = k.fill.smooth;
             fo.min_region_pixels = k.fill.min_region;
+            retrace = {};
             f = std::move(k.frame);
             canvas = std::move(k.canvas);
             rep.polygons_added += k.polygons;
@@ -264,6 +267,20 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             in.paint.seed = video::frame_seed(opts.paint.seed, index);
             auto r = paint_inter_frame(in);
             if (!r) return r.error();
+            if (opts.fill.search_tolerance) {
+                // A frame that retraced nearly everything may take a coarser outline.
+                auto paint_at = [&](double tolerance) -> Result<InterFrame> {
+                    FillOptions t = fo;
+                    t.trace.epsilon = tolerance;
+                    const FillLayer traced = build_fill_layer(rgb, opts.background, **renderer, t, &palette, &live);
+                    InterInput at = in;
+                    at.polygons = &traced.strokes;
+                    return paint_inter_frame(at);
+                };
+                r = choose_retrace_outline(std::move(*r), outline_vertices(fill.strokes), fo.trace.epsilon,
+                                           opts.paint.target_psnr, model, retrace, paint_at, parallel);
+                if (!r) return r.error();
+            }
             if (std::getenv("SPT_CARTOON_DEBUG"))  // tuning aid: what each frame keeps and adds
                 std::fprintf(stderr, "frame %u: %s, removed %zu, polygons added %llu (stood in %u, left out %u), kept %.2f dB, stamps %llu, cost %.0f\n",
                              index, r->lenient ? "lenient" : "strict", r->frame.removed.size(),
