@@ -51,22 +51,21 @@ struct FakePainter {
     }
 };
 
-TEST(RetraceOutline, AFrameThatKeptItsPolygonsNeverTries) {
+// How many paintings choose_retrace_outline asks for, for a frame that added `added` of 100
+// traced vertices at 500 estimated bytes, with a target of `target` dB; each trial is cheaper.
+size_t trials_asked(size_t added, double target) {
     FakePainter fake{{painted(10, 1, 0), painted(10, 1, 0)}};
     RetraceTrials trials;
-    // 100 traced vertices, 50 added: half of the frame was kept.
-    auto r = choose_retrace_outline(painted(50, 500, 0), 100, 0.5, 36, kView, trials, std::ref(fake), false);
-    ASSERT_TRUE(r);
-    EXPECT_TRUE(fake.asked.empty());
-    EXPECT_EQ(r->cost, 500);
+    auto r = choose_retrace_outline(painted(added, 500, 0), 100, 0.5, target, kView, trials, std::ref(fake), false);
+    EXPECT_TRUE(r);
+    return fake.asked.size();
 }
 
-TEST(RetraceOutline, WithoutATargetNothingIsTried) {
-    FakePainter fake{{painted(10, 1, 0), painted(10, 1, 0)}};
-    RetraceTrials trials;
-    auto r = choose_retrace_outline(painted(100, 500, 0), 100, 0.5, 0, kView, trials, std::ref(fake), false);
-    ASSERT_TRUE(r);
-    EXPECT_TRUE(fake.asked.empty());
+TEST(RetraceOutline, OnlyAFrameThatRetracedNearlyEverythingTriesWithATarget) {
+    EXPECT_EQ(trials_asked(100, 36), kRetraceFactors.size());
+    EXPECT_EQ(trials_asked(80, 36), kRetraceFactors.size());
+    EXPECT_EQ(trials_asked(79, 36), 0u) << "a fifth of the frame was kept";
+    EXPECT_EQ(trials_asked(100, 0), 0u) << "without a target a coarser outline must not cost quality";
 }
 
 TEST(RetraceOutline, TheCheapestPaintingThatReachesTheTargetIsKept) {
