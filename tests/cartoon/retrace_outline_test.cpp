@@ -1,7 +1,8 @@
-// choose_retrace_outline: an inter frame that retraced nearly every polygon tries coarser
-// outlines and keeps the cheapest painting that reaches the target; one that kept its polygons,
-// or one painted without a target, never tries; a trial that loses makes the next wait longer.
-// End to end: the star's morphing outline takes fewer bytes than at its interval's tolerance.
+// retrace_outline: the regions an inter frame traced anew are traced again at coarser outlines,
+// the others kept as they were, and the cheapest painting that reaches the target is kept; a
+// frame that kept every region, or one painted without a target, never tries; a trial that
+// loses makes the next wait longer. End to end: the star's morphing outline takes fewer bytes
+// than at its interval's tolerance.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -51,28 +52,65 @@ struct FakePainter {
     }
 };
 
-// How many paintings choose_retrace_outline asks for, for a frame that added `added` of 100
-// traced vertices at 500 estimated bytes, with a target of `target` dB; each trial is cheaper.
-size_t trials_asked(size_t added, double target) {
+// How many paintings choose_retrace_outline asks for, for a frame at 500 estimated bytes that
+// traced a region anew or not, with a target of `target` dB; each trial is cheaper.
+size_t trials_asked(bool any_retraced, double target) {
     FakePainter fake{{painted(10, 1, 0), painted(10, 1, 0)}};
     RetraceTrials trials;
-    auto r = choose_retrace_outline(painted(added, 500, 0), 100, 0.5, target, kView, trials, std::ref(fake), false);
+    auto r = choose_retrace_outline(painted(100, 500, 0), any_retraced, 0.5, target, kView, trials, std::ref(fake), false);
     EXPECT_TRUE(r);
     return fake.asked.size();
 }
 
-TEST(RetraceOutline, OnlyAFrameThatRetracedNearlyEverythingTriesWithATarget) {
-    EXPECT_EQ(trials_asked(100, 36), kRetraceFactors.size());
-    EXPECT_EQ(trials_asked(80, 36), kRetraceFactors.size());
-    EXPECT_EQ(trials_asked(79, 36), 0u) << "a fifth of the frame was kept";
-    EXPECT_EQ(trials_asked(100, 0), 0u) << "without a target a coarser outline must not cost quality";
+TEST(RetraceOutline, OnlyAFrameThatRetracedARegionTriesWithATarget) {
+    EXPECT_EQ(trials_asked(true, 36), kRetraceFactors.size());
+    EXPECT_EQ(trials_asked(false, 36), 0u) << "every region was kept";
+    EXPECT_EQ(trials_asked(true, 0), 0u) << "without a target a coarser outline must not cost quality";
+}
+
+// A polygon told apart by its red.
+spt::Stroke shape(uint8_t red) {
+    spt::PolygonStroke p;
+    p.color = {red, 0, 0, 255};
+    p.points = {{0, 0}, {160, 0}, {0, 160}};
+    return spt::Stroke::make_polygon(p);
+}
+
+spt::cartoon::FillLayer layer(std::vector<std::pair<int, uint8_t>> region_and_red) {
+    spt::cartoon::FillLayer f;
+    for (auto [region, red] : region_and_red) {
+        f.strokes.push_back(shape(red));
+        f.region.push_back(region);
+    }
+    return f;
+}
+
+TEST(RetraceOutline, ARegionIsRetracedWhenEveryStrokeOfItWasAdded) {
+    const auto traced = layer({{1, 10}, {1, 11}, {2, 20}, {4, 40}, {4, 41}});
+    spt::Frame f;
+    f.added = {shape(10), shape(11), shape(41)};  // region 1 whole, region 4 in part
+    spt::StampStroke st;
+    f.added.push_back(spt::Stroke::make_stamp(st));
+    EXPECT_EQ(spt::cartoon::retraced_regions(traced, f), (std::vector<bool>{false, true, false, false, false}));
+}
+
+TEST(RetraceOutline, RetracedRegionsTakeTheCoarserStrokesInDrawingOrder) {
+    const auto interval = layer({{1, 10}, {1, 11}, {2, 20}, {3, 30}, {5, 50}});
+    const auto coarse = layer({{1, 110}, {2, 120}, {3, 130}, {3, 131}, {4, 140}});
+    const std::vector<bool> retraced = {false, true, false, true, false, true};
+    const auto mixed = spt::cartoon::with_coarser_regions(interval, coarse, retraced);
+    std::vector<int> reds;
+    for (const spt::Stroke& s : mixed) reds.push_back(s.polygon.color.r);
+    // Region 1 coarse, 2 as it was, 3 coarse (two strokes now), 4 only coarse and not retraced:
+    // left out, 5 retraced but gone at the coarser tolerance.
+    EXPECT_EQ(reds, (std::vector<int>{110, 20, 130, 131}));
 }
 
 TEST(RetraceOutline, TheCheapestPaintingThatReachesTheTargetIsKept) {
     // The first factor is cheapest but misses the target (28 dB); the second reaches it for less.
     FakePainter fake{{painted(40, 100, 10), painted(60, 300, 0)}};
     RetraceTrials trials;
-    auto r = choose_retrace_outline(painted(100, 500, 0), 100, 0.5, 36, kView, trials, std::ref(fake), false);
+    auto r = choose_retrace_outline(painted(100, 500, 0), true, 0.5, 36, kView, trials, std::ref(fake), false);
     ASSERT_TRUE(r);
     std::sort(fake.asked.begin(), fake.asked.end());  // the first factor runs last without threads
     EXPECT_EQ(fake.asked, (std::vector<double>{0.5 * kRetraceFactors[0], 0.5 * kRetraceFactors[1]}));
@@ -85,7 +123,7 @@ TEST(RetraceOutline, ALosingTrialWaitsTwiceAsLongEachTime) {
     std::vector<int> tried_at;
     for (int frame = 0; frame < 40; ++frame) {
         FakePainter fake{{painted(100, 900, 0), painted(100, 900, 0)}};  // never cheaper
-        auto r = choose_retrace_outline(painted(100, 500, 0), 100, 0.5, 36, kView, trials, std::ref(fake), false);
+        auto r = choose_retrace_outline(painted(100, 500, 0), true, 0.5, 36, kView, trials, std::ref(fake), false);
         ASSERT_TRUE(r);
         EXPECT_EQ(r->cost, 500);
         if (!fake.asked.empty()) tried_at.push_back(frame);

@@ -1,5 +1,6 @@
 #include "cartoon/cartoon_sequence.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -268,17 +269,20 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             auto r = paint_inter_frame(in);
             if (!r) return r.error();
             if (opts.fill.search_tolerance) {
-                // A frame that retraced nearly everything may take a coarser outline.
+                // The regions it traced anew may take a coarser outline.
+                const std::vector<bool> retraced = retraced_regions(fill, r->frame);
                 auto paint_at = [&](double tolerance) -> Result<InterFrame> {
                     FillOptions t = fo;
                     t.trace.epsilon = tolerance;
-                    const FillLayer traced = build_fill_layer(rgb, opts.background, **renderer, t, &palette, &live);
+                    const FillLayer coarse = build_fill_layer(rgb, opts.background, **renderer, t, &palette, &live);
+                    const std::vector<Stroke> mixed = with_coarser_regions(fill, coarse, retraced);
                     InterInput at = in;
-                    at.polygons = &traced.strokes;
+                    at.polygons = &mixed;
                     return paint_inter_frame(at);
                 };
-                r = choose_retrace_outline(std::move(*r), outline_vertices(fill.strokes), fo.trace.epsilon,
-                                           opts.paint.target_psnr, model, retrace, paint_at, parallel);
+                const bool any = std::find(retraced.begin(), retraced.end(), true) != retraced.end();
+                r = choose_retrace_outline(std::move(*r), any, fo.trace.epsilon, opts.paint.target_psnr, model, retrace,
+                                           paint_at, parallel);
                 if (!r) return r.error();
             }
             if (std::getenv("SPT_CARTOON_DEBUG"))  // tuning aid: what each frame keeps and adds

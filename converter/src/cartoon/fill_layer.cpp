@@ -182,6 +182,7 @@ FillLayer build_fill_layer(const cv::Mat& rgb, Rgb8 background, const Renderer& 
                 (void)renderer.draw(built, d);
             }
             out.strokes.push_back(std::move(s));
+            out.region.push_back(i);
         }
     }
 

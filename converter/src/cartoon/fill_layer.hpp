@@ -48,6 +48,7 @@ struct FillOptions {
 
 struct FillLayer {
     std::vector<Stroke> strokes;        // polygons and lines (curves), drawing order
+    std::vector<int> region;            // per stroke, the region it draws (ascending: drawing order)
     uint8_t grid = 0;                   // the supersampling grid chosen (polygons and curves)
     size_t lines = 0;                   // regions drawn as curves
     size_t colors = 0, regions = 0;

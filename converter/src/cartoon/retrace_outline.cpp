@@ -4,17 +4,40 @@
 #include <cstdio>
 #include <cstdlib>
 #include <future>
-#include <optional>
 
 namespace spt::cartoon {
 
-uint64_t outline_vertices(const std::vector<Stroke>& strokes) {
-    uint64_t n = 0;
-    for (const Stroke& s : strokes) {
-        if (s.kind == StrokeKind::Polygon) n += s.polygon.points.size();
-        if (s.kind == StrokeKind::Curve) n += s.curve.points.size();
+std::vector<bool> retraced_regions(const FillLayer& traced, const Frame& painted) {
+    const int regions = traced.region.empty() ? 0 : *std::max_element(traced.region.begin(), traced.region.end()) + 1;
+    std::vector<bool> retraced(size_t(regions), false), seen(size_t(regions), false);
+    for (size_t i = 0; i < traced.strokes.size() && i < traced.region.size(); ++i) {
+        const size_t r = size_t(traced.region[i]);
+        const bool added = std::any_of(painted.added.begin(), painted.added.end(), [&](const Stroke& a) {
+            return a.kind != StrokeKind::Stamp && a == traced.strokes[i];
+        });
+        retraced[r] = (seen[r] ? retraced[r] : true) && added;
+        seen[r] = true;
     }
-    return n;
+    return retraced;
+}
+
+std::vector<Stroke> with_coarser_regions(const FillLayer& interval, const FillLayer& coarse,
+                                         const std::vector<bool>& retraced) {
+    auto is_retraced = [&](int r) { return r >= 0 && size_t(r) < retraced.size() && retraced[size_t(r)]; };
+    std::vector<Stroke> out;
+    size_t a = 0, b = 0;
+    const size_t na = std::min(interval.strokes.size(), interval.region.size());
+    const size_t nb = std::min(coarse.strokes.size(), coarse.region.size());
+    // Both lists are in region order (drawing order); merge them region by region.
+    while (a < na || b < nb) {
+        const int ra = a < na ? interval.region[a] : INT32_MAX, rb = b < nb ? coarse.region[b] : INT32_MAX;
+        const int r = std::min(ra, rb);
+        for (; a < na && interval.region[a] == r; ++a)
+            if (!is_retraced(r)) out.push_back(interval.strokes[a]);
+        for (; b < nb && coarse.region[b] == r; ++b)
+            if (is_retraced(r)) out.push_back(coarse.strokes[b]);
+    }
+    return out;
 }
 
 bool better_at_target(const InterFrame& a, const InterFrame& b, const paint::ImageView& model, double target_psnr) {
@@ -26,12 +49,10 @@ bool better_at_target(const InterFrame& a, const InterFrame& b, const paint::Ima
     return b.cost < a.cost;
 }
 
-Result<InterFrame> choose_retrace_outline(InterFrame painted, uint64_t traced_vertices, double tolerance,
-                                          double target_psnr, const paint::ImageView& model, RetraceTrials& trials,
+Result<InterFrame> choose_retrace_outline(InterFrame painted, bool any_retraced, double tolerance, double target_psnr,
+                                          const paint::ImageView& model, RetraceTrials& trials,
                                           const std::function<Result<InterFrame>(double)>& paint_at, bool parallel) {
-    if (!(target_psnr > 0) || traced_vertices == 0 ||
-        double(outline_vertices(painted.frame.added)) < kRetracedShare * double(traced_vertices))
-        return painted;
+    if (!(target_psnr > 0) || !any_retraced) return painted;
     if (trials.wait > 0) {
         --trials.wait;
         return painted;

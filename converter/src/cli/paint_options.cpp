@@ -146,7 +146,7 @@ void declare(Args& a, bool plan) {
                                            "the traced edge. Default: with --target-psnr the coarsest of 1, 0.7 and 0.5 whose polygons reach "
                                            "it; short of it, the smallest file of 0.25, 0.35 and 0.5 for a still, 0.35 or 0.5 "
                                            "for a sequence's key frame; 0.35 otherwise. Inter frames follow their key frame's, and with "
-                                           "--target-psnr one that traces nearly everything anew also tries 1.2 and 1.4 times it")
+                                           "--target-psnr the regions one traces anew also try 1.2 and 1.4 times it")
         .option("outline-smooth", "PX", "--style cartoon: average a traced edge over +-PX pixels (0..2) before "
                                         "its outline is simplified: a blurred or noisy edge takes fewer vertices. "
                                         "Default: unsmoothed, but short of --target-psnr a still smooths its 0.25 "
