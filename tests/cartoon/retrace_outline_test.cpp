@@ -26,13 +26,10 @@ constexpr uint32_t kSide = 8;
 const std::vector<uint8_t> kModel(kSide * kSide * 3, 100);
 const spt::paint::ImageView kView{kSide, kSide, kModel.data()};
 
-// A painted frame of `vertices` polygon vertices, `cost` estimated bytes, its canvas `error`
-// levels off the model in every sample (0: exact; 10: 28.1 dB).
-InterFrame painted(size_t vertices, double cost, int error) {
+// A painted frame of `cost` estimated bytes, its canvas `error` levels off the model in every
+// sample (0: exact; 10: 28.1 dB).
+InterFrame painted(double cost, int error) {
     InterFrame r;
-    spt::PolygonStroke p;
-    p.points.resize(vertices);
-    r.frame.added.push_back(spt::Stroke::make_polygon(p));
     r.cost = cost;
     r.canvas = spt::Canvas(kSide, kSide, {uint8_t(100 + error), uint8_t(100 + error), uint8_t(100 + error)});
     return r;
@@ -55,9 +52,9 @@ struct FakePainter {
 // How many paintings choose_retrace_outline asks for, for a frame at 500 estimated bytes that
 // traced a region anew or not, with a target of `target` dB; each trial is cheaper.
 size_t trials_asked(bool any_retraced, double target) {
-    FakePainter fake{{painted(10, 1, 0), painted(10, 1, 0)}};
+    FakePainter fake{{painted(1, 0), painted(1, 0)}};
     RetraceTrials trials;
-    auto r = choose_retrace_outline(painted(100, 500, 0), any_retraced, 0.5, target, kView, trials, std::ref(fake), false);
+    auto r = choose_retrace_outline(painted(500, 0), any_retraced, 0.5, target, kView, trials, std::ref(fake), false);
     EXPECT_TRUE(r);
     return fake.asked.size();
 }
@@ -108,9 +105,9 @@ TEST(RetraceOutline, RetracedRegionsTakeTheCoarserStrokesInDrawingOrder) {
 
 TEST(RetraceOutline, TheCheapestPaintingThatReachesTheTargetIsKept) {
     // The first factor is cheapest but misses the target (28 dB); the second reaches it for less.
-    FakePainter fake{{painted(40, 100, 10), painted(60, 300, 0)}};
+    FakePainter fake{{painted(100, 10), painted(300, 0)}};
     RetraceTrials trials;
-    auto r = choose_retrace_outline(painted(100, 500, 0), true, 0.5, 36, kView, trials, std::ref(fake), false);
+    auto r = choose_retrace_outline(painted(500, 0), true, 0.5, 36, kView, trials, std::ref(fake), false);
     ASSERT_TRUE(r);
     std::sort(fake.asked.begin(), fake.asked.end());  // the first factor runs last without threads
     EXPECT_EQ(fake.asked, (std::vector<double>{0.5 * kRetraceFactors[0], 0.5 * kRetraceFactors[1]}));
@@ -122,8 +119,8 @@ TEST(RetraceOutline, ALosingTrialWaitsTwiceAsLongEachTime) {
     RetraceTrials trials;
     std::vector<int> tried_at;
     for (int frame = 0; frame < 40; ++frame) {
-        FakePainter fake{{painted(100, 900, 0), painted(100, 900, 0)}};  // never cheaper
-        auto r = choose_retrace_outline(painted(100, 500, 0), true, 0.5, 36, kView, trials, std::ref(fake), false);
+        FakePainter fake{{painted(900, 0), painted(900, 0)}};  // never cheaper
+        auto r = choose_retrace_outline(painted(500, 0), true, 0.5, 36, kView, trials, std::ref(fake), false);
         ASSERT_TRUE(r);
         EXPECT_EQ(r->cost, 500);
         if (!fake.asked.empty()) tried_at.push_back(frame);
