@@ -128,6 +128,15 @@ bool same_plan(const Frame& a, const Frame& b) {
 
 }  // namespace
 
+bool better_at_target(const InterFrame& a, const InterFrame& b, const paint::ImageView& model, double target_psnr) {
+    const double pa = paint::psnr(model, a.canvas.rgb.data());
+    const double pb = paint::psnr(model, b.canvas.rgb.data());
+    const bool reach_a = pa >= target_psnr, reach_b = pb >= target_psnr;
+    if (reach_a != reach_b) return reach_b;
+    if (!reach_a) return pb > pa;
+    return b.cost < a.cost;
+}
+
 Result<InterFrame> paint_inter_frame(const InterInput& in) {
     // The two plans are independent (each reads the inputs, the renderer's caches are thread
     // safe): with more than one thread the lenient one is made beside the strict one.
@@ -150,12 +159,10 @@ Result<InterFrame> paint_inter_frame(const InterInput& in) {
     // Without a target, fewer bytes must not cost quality: the lenient one only when it is
     // both cheaper and no worse.
     const double target = in.paint.target_psnr;
-    const double ps = paint::psnr(in.model, strict->canvas.rgb.data());
-    const double pl = paint::psnr(in.model, lenient->canvas.rgb.data());
-    bool take_lenient = lenient->cost < strict->cost;
-    if (!(target > 0)) take_lenient = take_lenient && pl >= ps;
-    else if ((ps >= target) != (pl >= target)) take_lenient = pl >= target;
-    else if (ps < target) take_lenient = pl > ps;
+    bool take_lenient = better_at_target(*strict, *lenient, in.model, target);
+    if (!(target > 0))
+        take_lenient = lenient->cost < strict->cost && paint::psnr(in.model, lenient->canvas.rgb.data()) >=
+                                                           paint::psnr(in.model, strict->canvas.rgb.data());
     return take_lenient ? std::move(*lenient) : std::move(*strict);
 }
 

@@ -45,6 +45,11 @@ struct InterFrame {
 
 Result<InterFrame> paint_inter_frame(const InterInput& in);
 
+// Of `a` and `b`, painted to `target_psnr` of `model`, whether `b` is better: both reach the
+// target and `b` costs fewer estimated bytes; only `b` reaches it; or neither does and `b` is
+// closer. (The strict and lenient plans are chosen so, and the retrace trials.)
+bool better_at_target(const InterFrame& a, const InterFrame& b, const paint::ImageView& model, double target_psnr);
+
 
 // Roughly what a frame costs in bytes, range coded: per polygon its header and vertices, per
 // stamp, per removal (measured with `spt info --json` on the butterfly: a stamp 5.6 bytes, a

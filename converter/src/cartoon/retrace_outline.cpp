@@ -40,15 +40,6 @@ std::vector<Stroke> with_coarser_regions(const FillLayer& interval, const FillLa
     return out;
 }
 
-bool better_at_target(const InterFrame& a, const InterFrame& b, const paint::ImageView& model, double target_psnr) {
-    const double pa = paint::psnr(model, a.canvas.rgb.data());
-    const double pb = paint::psnr(model, b.canvas.rgb.data());
-    const bool reach_a = pa >= target_psnr - 0.005, reach_b = pb >= target_psnr - 0.005;
-    if (reach_a != reach_b) return reach_b;
-    if (!reach_a) return pb > pa;
-    return b.cost < a.cost;
-}
-
 Result<InterFrame> choose_retrace_outline(InterFrame painted, bool any_retraced, double tolerance, double target_psnr,
                                           const paint::ImageView& model, RetraceTrials& trials,
                                           const std::function<Result<InterFrame>(double)>& paint_at, bool parallel) {

@@ -3,9 +3,9 @@
 // traced at a coarser one; which tolerance trades vertices for stamps best changes as the shapes
 // do. Such a frame is painted again with those regions traced at each of kRetraceFactors times
 // the interval's tolerance, the other regions as they were (so that what was kept stays kept),
-// and the painting of fewest estimated bytes at the target is written. A trial that loses makes
-// the next wait twice as long (taffy's warped glyphs are retraced every frame, and a coarser
-// outline never pays there).
+// and the better painting at the target is written (better_at_target, inter_frame.hpp). A trial
+// that loses makes the next wait twice as long (taffy's warped glyphs are retraced every frame,
+// and a coarser outline never pays there).
 #pragma once
 
 #include <array>
@@ -38,11 +38,6 @@ std::vector<bool> retraced_regions(const FillLayer& traced, const Frame& painted
 // strokes in `coarse` (the same picture traced at another tolerance), in region order.
 std::vector<Stroke> with_coarser_regions(const FillLayer& interval, const FillLayer& coarse,
                                          const std::vector<bool>& retraced);
-
-// Of `a` and `b`, painted to `target_psnr` of `model`, whether `b` is better: both reach the
-// target and `b` costs fewer estimated bytes; only `b` reaches it; or neither does and `b` is
-// closer.
-bool better_at_target(const InterFrame& a, const InterFrame& b, const paint::ImageView& model, double target_psnr);
 
 // `painted` is the frame painted at `tolerance`, and `any_retraced` says whether it traced a
 // region anew; `paint_at(t)` paints it with those regions traced at tolerance t. Returns the
