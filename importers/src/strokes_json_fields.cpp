@@ -135,6 +135,16 @@ const Value* points_field(const Ctx& c, const Value& s, const std::string& where
     return f;
 }
 
+bool read_supersample(const Ctx& c, const Value& s, const std::string& where, uint8_t& out, Error& e) {
+    const Value* n = s.find("supersample");
+    if (!n) return true;
+    int64_t v;
+    if (!c.integer(*n, where + ".supersample", 0, 16, v, e)) return false;
+    if (v == 1) { e = c.err(*n, where + ".supersample must be 0 or 2..16"); return false; }
+    out = uint8_t(v);
+    return true;
+}
+
 bool list_of(const Ctx& c, const Value& v, const std::string& name, size_t max, Error& e) {
     if (!c.need(v, Type::Array, name, e)) return false;
     if (v.items.empty() || v.items.size() > max) {

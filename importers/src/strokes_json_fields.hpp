@@ -90,6 +90,8 @@ const Value* field(const Ctx& c, const Value& obj, const char* key, const std::s
 // The "points" array of a polygon or curve stroke, of min..max items (`noun` in the error).
 const Value* points_field(const Ctx& c, const Value& s, const std::string& where, size_t min, size_t max,
                           const char* noun, Error& e);
+// A polygon's or curve's optional "supersample" grid: 0 (absent) or 2..16 (SPEC.md 8.5, 8.8).
+bool read_supersample(const Ctx& c, const Value& s, const std::string& where, uint8_t& out, Error& e);
 // `v`, named `name`: an array of 1..`max` entries.
 bool list_of(const Ctx& c, const Value& v, const std::string& name, size_t max, Error& e);
 // `v`, named `name`: an array of `n` values, written `shape` in the error ("[x, y]", ...).

@@ -58,12 +58,7 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
         // Version 2: a polygon stroke, stored as given (SPEC.md 4, format 1.2).
         PolygonStroke pg;
         if (!read_color(c, s, where, pg.color, e)) return false;
-        if (const Value* n = s.find("supersample")) {
-            int64_t v;
-            if (!c.integer(*n, where + ".supersample", 0, 16, v, e)) return false;
-            if (v == 1) { e = c.err(*n, where + ".supersample must be 0 or 2..16"); return false; }
-            pg.supersample = uint8_t(v);
-        }
+        if (!read_supersample(c, s, where, pg.supersample, e)) return false;
         const Value* f = points_field(c, s, where, 3, c.lim().max_polygon_vertices, "vertices", e);
         if (!f) return false;
         for (size_t i = 0; i < f->items.size(); ++i) {
@@ -104,13 +99,11 @@ bool read_stroke(const Ctx& c, const Value& s, const std::string& where, const S
     } else if (t == "curve") {
         CurveStroke cv;
         if (!read_color(c, s, where, cv.color, e)) return false;
-        if (const Value* n = s.find("supersample")) {  // anti-aliased lines (format 1.4)
-            int64_t v;
-            if (c.version < 2) { e = c.err(*n, where + ".supersample needs version 2"); return false; }
-            if (!c.integer(*n, where + ".supersample", 0, 16, v, e)) return false;
-            if (v == 1) { e = c.err(*n, where + ".supersample must be 0 or 2..16"); return false; }
-            cv.supersample = uint8_t(v);
+        if (const Value* n = s.find("supersample"); n && c.version < 2) {  // anti-aliased lines (format 1.4)
+            e = c.err(*n, where + ".supersample needs version 2");
+            return false;
         }
+        if (!read_supersample(c, s, where, cv.supersample, e)) return false;
         const Value* f = points_field(c, s, where, 1, c.lim().max_curve_points, "points", e);
         if (!f) return false;
         for (size_t i = 0; i < f->items.size(); ++i) {

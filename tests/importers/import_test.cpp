@@ -369,6 +369,18 @@ TEST(RoundTrip, AntiAliasedCurvesThroughJson) {
     auto d = import_text("v1curve.json", v1);
     ASSERT_FALSE(d.ok());
     EXPECT_NE(d.error().message.find("supersample needs version 2"), std::string::npos) << d.error().message;
+    // A grid of 1 is no grid (SPEC.md 8.5, 8.8): refused for polygons and curves alike, naming the stroke.
+    for (const char* type : {"polygon", "curve"}) {
+        const std::string pts = std::string(type) == "curve" ? "[[1,1,2],[30,2,2]]" : "[[1,1],[30,2],[5,20]]";
+        const std::string v2 =
+            "{\"format\": \"spt-strokes\", \"version\": 2, \"canvas\": {\"width\": 40, \"height\": 30},\n"
+            " \"strokes\": [{\"type\": \"" + std::string(type) + "\", \"supersample\": 1, \"points\": " + pts +
+            ", \"color\": [9,80,200]}]}";
+        auto g = import_text("grid1.json", v2.c_str());
+        ASSERT_FALSE(g.ok()) << type;
+        EXPECT_NE(g.error().message.find("grid1.json:2: frames[0].strokes[0].supersample must be 0 or 2..16"), std::string::npos)
+            << g.error().message;
+    }
 }
 
 TEST(RoundTrip, ShapeStrokesAndDefaultTemplates) {
