@@ -89,6 +89,41 @@ TEST(HostileCli, BrokenImagesFailNamingTheFileAndWriteNothing) {
     }
 }
 
+// ---- a video cut short ----
+
+// A video that ends before the frames its header promises (a copy that stopped early) decoded
+// up to the damage and was painted as if that were all of it, with nothing said. Now both
+// painters and the plan's scans say so, naming the file; a range wholly past the end fails.
+TEST(HostileCli, AVideoCutShortIsSaidAndARangePastItsEndFails) {
+    TempDir d;
+    const std::string cut = input("video_30f_cut.avi");
+    const std::string said = "video_30f_cut.avi: decoding stopped at frame 1, but its header says 30 frames";
+    for (const char* style : {"painterly", "cartoon"}) {
+        auto r = run_spt(d, {"paint", cut, "-o", d.file("o.spt"), "--style", style, "--max-strokes", "50"});
+        EXPECT_EQ(r.code, 0) << style << ": " << r.err;
+        EXPECT_HAS(r.err, said);
+        EXPECT_HAS(r.err, "read 1 of the 30 frames asked for");
+        r = run_spt(d, {"info", d.file("o.spt"), "--json"});
+        EXPECT_HAS(r.out, "\"frames_found\": 1");
+        fs::remove(d.file("o.spt"));
+        r = run_spt(d, {"paint", cut, "-o", d.file("o.spt"), "--style", style, "--frames", "10-20"});
+        EXPECT_TRUE(failed_with(r, 1, {said, "read 0 of the 11 frames asked for"})) << style;
+        EXPECT_EQ(names(d), Names{}) << style;
+    }
+    for (const char* scan : {"full", "sampled"}) {
+        auto r = run_spt(d, {"plan", cut, "-o", d.file("p.plan.json"), "--cut-scan", scan});
+        EXPECT_EQ(r.code, 0) << scan << ": " << r.err;
+        EXPECT_HAS(r.err, said);
+    }
+    // The whole file decodes all it promises: nothing is said.
+    auto r = run_spt(d, {"paint", input("video_30f.avi"), "-o", d.file("w.spt"), "--max-strokes", "50"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("decoding stopped"), std::string::npos) << r.err;
+    r = run_spt(d, {"plan", input("video_30f.avi"), "-o", d.file("w.plan.json"), "--cut-scan", "full"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("decoding stopped"), std::string::npos) << r.err;
+}
+
 // ---- damaged .spt files ----
 
 // Issue 20 item 4: this rendered 1 of 5 frames, printed nothing and exited 0.

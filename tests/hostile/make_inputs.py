@@ -2,7 +2,7 @@
 """Writes the crafted inputs of hostile_cli_test.cpp into inputs/ (run from this folder; the
 outputs are committed). Images are made here byte by byte; .spt files are golden files with one
 field changed (CRC fixed where the field is covered by it)."""
-import os, struct, zlib
+import os, struct, subprocess, zlib
 
 G = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'format', 'golden')
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'inputs')
@@ -77,3 +77,12 @@ write('strokes_bad_utf8.json', b'{"format": "spt-strokes", "version": 1, "canvas
       b'"metadata": {"title": "caf\xe9"}, "frames": [{"type": "key", "strokes": []}]}')
 write('strokes_min.json', b'{"format": "spt-strokes", "version": 1, "canvas": {"width": 8, "height": 8}, '
       b'"frames": [{"type": "key", "strokes": []}]}')
+# A video whose header promises 30 frames, cut to half its bytes (a copy that stopped early):
+# the AVI index at the end is gone, and decoding ends after frame 0. ffmpeg's test pattern,
+# MPEG-4 part 2; the whole file too, which must decode all 30.
+whole = os.path.join(OUT, 'video_30f.avi')
+subprocess.run(['ffmpeg', '-v', 'error', '-y', '-f', 'lavfi', '-i', 'testsrc=size=64x48:rate=24', '-frames:v', '30',
+                '-c:v', 'mpeg4', '-q:v', '5', '-g', '10', '-fflags', '+bitexact', '-flags', '+bitexact', whole],
+               check=True)
+v = open(whole, 'rb').read()
+write('video_30f_cut.avi', v[:len(v) // 2])

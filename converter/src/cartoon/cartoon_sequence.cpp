@@ -189,7 +189,10 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     video::SourceFrame frame;
     auto got = source.next(frame);
     if (!got) return got.error();
-    if (!*got) return make_error(Code::IoError, source.describe() + ": no frames to paint");
+    if (!*got) {
+        const std::string why = source.shortfall();
+        return make_error(Code::IoError, why.empty() ? source.describe() + ": no frames to paint" : why);
+    }
     const uint32_t W = frame.image.width, H = frame.image.height;
 
     paint::PaintSetup setup = paint::make_setup(W, H, opts.background, paint::default_sets(W, H, opts.sets),
@@ -346,7 +349,11 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             (*writer)->abort();
             return got.error();
         }
-        if (!*got) break;
+        if (!*got) {
+            if (const std::string why = source.shortfall(); !why.empty())
+                std::fprintf(stderr, "spt paint: warning: %s\n", why.c_str());
+            break;
+        }
     }
     if (Status s = (*writer)->finish(); !s) return s;
     rep.bytes = (*writer)->stats().total_bytes;

@@ -67,6 +67,7 @@ int cmd_plan(int argc, char** argv) {
                   p->cut_scan.c_str(), cuts.c_str(), p->shots.size(),
                   p->id.c_str(), stats.seconds, stats.frames ? 1000.0 * stats.seconds / double(stats.frames) : 0.0);
     progress.finish(true, detail);
+    if (!stats.shortfall.empty()) std::fprintf(stderr, "spt plan: warning: %s\n", stats.shortfall.c_str());
     if (o.progress != io::ProgressMode::Json) std::fprintf(stderr, "spt plan: %s: %s\n", o.output.c_str(), detail);
     return 0;
 }

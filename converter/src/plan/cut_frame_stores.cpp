@@ -124,6 +124,7 @@ public:
         : src_(std::move(src)), detector_(o.detector) {}
 
     size_t count() const override { return read_; }
+    std::string shortfall() const override { return ended_ ? src_->shortfall() : std::string(); }
 
     Result<const video::CutFrame*> at(size_t pos) override {
         while (!ended_ && read_ <= pos) {

@@ -18,6 +18,8 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     size_t decoded() const { return decoded_; }  // frames read (a frame read twice counts twice)
+    // A video that ended short of its header's frame count (GrayFrames::shortfall), or empty.
+    virtual std::string shortfall() const { return {}; }
     void forget_before(size_t pos) override { kept_.erase(kept_.begin(), kept_.lower_bound(pos)); }
 
 protected:

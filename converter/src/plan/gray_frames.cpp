@@ -37,6 +37,7 @@ public:
     bool has_fps() const override { return src_->has_fps(); }
     Rational fps() const override { return src_->fps(); }
     uint64_t expected_frames() const override { return src_->expected_frames(); }
+    std::string shortfall() const override { return src_->shortfall(); }
     std::string describe() const override { return src_->describe(); }
 
 private:
@@ -66,6 +67,7 @@ public:
     bool has_fps() const override { return video_.fps() > 0 && std::isfinite(video_.fps()); }
     Rational fps() const override { return video::fps_from_double(video_.fps()); }
     uint64_t expected_frames() const override { return video_.expected_frames(); }
+    std::string shortfall() const override { return video_.shortfall(); }
     std::string describe() const override { return video_.path(); }
 
 private:

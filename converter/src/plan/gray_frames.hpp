@@ -23,6 +23,8 @@ public:
     virtual bool has_fps() const = 0;
     virtual Rational fps() const = 0;
     virtual uint64_t expected_frames() const = 0;
+    // After next() returned false: why the frames ended short (video::FrameSource::shortfall).
+    virtual std::string shortfall() const { return {}; }
     virtual std::string describe() const = 0;
 };
 

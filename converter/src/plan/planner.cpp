@@ -107,9 +107,13 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
             ++n;
             progress.update(double(n), "frame " + std::to_string(number));
         }
-        if (n == 0) return make_error(Code::IoError, source.describe() + ": no frames to plan");
+        if (n == 0) {
+            const std::string why = source.shortfall();
+            return make_error(Code::IoError, why.empty() ? source.describe() + ": no frames to plan" : why);
+        }
         p.last = prev;
         decoded = n;
+        if (stats) stats->shortfall = source.shortfall();
     } else {
         p.cut_scan = "sampled";
         p.cut_step = std::max(1, o.cut_step);
@@ -145,6 +149,7 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
         if (!cuts) return cuts.error();
         n = frames->count();
         decoded = frames->decoded();
+        if (stats) stats->shortfall = frames->shortfall();
         p.first = frames->first_number();
         p.last = p.first + long(n) - 1;
         p.width = uint32_t(frames->width());

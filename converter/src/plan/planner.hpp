@@ -39,6 +39,7 @@ struct PlanStats {
     double seconds = 0;              // the whole pass
     uint64_t frames = 0;
     uint64_t decoded = 0;            // frames read and analysed (all of them in a full scan)
+    std::string shortfall;           // a video that ended short of its header's frame count, or empty
 };
 
 Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* stats = nullptr);

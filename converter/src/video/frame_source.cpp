@@ -116,6 +116,7 @@ public:
     bool has_fps() const override { return video_.fps() > 0 && std::isfinite(video_.fps()); }
     Rational fps() const override { return fps_from_double(video_.fps()); }
     uint64_t expected_frames() const override { return video_.expected_frames(); }
+    std::string shortfall() const override { return video_.shortfall(); }
     std::string describe() const override { return video_.path(); }
 
 private:

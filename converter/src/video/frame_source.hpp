@@ -33,6 +33,9 @@ public:
     virtual Rational fps() const { return {}; }
     // Frames expected, or 0 when unknown (for progress).
     virtual uint64_t expected_frames() const = 0;
+    // After next() returned false: why the source ended short of the frames it promised (a
+    // damaged or cut-short video file), or empty.
+    virtual std::string shortfall() const { return {}; }
     virtual std::string describe() const = 0;
 };
 

@@ -99,7 +99,10 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
     SourceFrame frame;
     Result<bool> got = (*src)->next(frame);
     if (!got) return got.error();
-    if (!*got) return make_error(Code::IoError, (*src)->describe() + ": no frames to paint");
+    if (!*got) {
+        const std::string why = (*src)->shortfall();
+        return make_error(Code::IoError, why.empty() ? (*src)->describe() + ": no frames to paint" : why);
+    }
     FrameSource& source = **src;
 
     Rational fps{24, 1};
@@ -183,7 +186,11 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
             encoder.abort();
             return got.error();
         }
-        if (!*got) break;
+        if (!*got) {
+            if (const std::string why = source.shortfall(); !why.empty())
+                std::fprintf(stderr, "spt paint: warning: %s\n", why.c_str());
+            break;
+        }
     }
     Status st = encoder.finish();
     if (report) {

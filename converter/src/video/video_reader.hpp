@@ -45,6 +45,7 @@ public:
             if (!cap_.read(frame) || frame.empty()) return false;
             break;
         }
+        ++delivered_;
         number = pos_++;
         if (frame.depth() != CV_8U) frame.convertTo(frame, CV_8U);
         return true;
@@ -60,6 +61,16 @@ public:
 
     double fps() const { return fps_; }
     uint64_t expected_frames() const { return range_.count_in_video(total_); }
+    // After next() returned false: why fewer frames came than the file's header promised for
+    // the range, or empty. A damaged or cut-short file decodes up to the damage and then ends
+    // like a whole one; the header's count is what tells them apart.
+    std::string shortfall() const {
+        const uint64_t expected = expected_frames();
+        if (total_ == 0 || delivered_ >= expected) return {};
+        return path_ + ": decoding stopped at frame " + std::to_string(pos_) + ", but its header says " +
+               std::to_string(total_) + " frames (is the file damaged or cut short?): read " +
+               std::to_string(delivered_) + " of the " + std::to_string(expected) + " frames asked for";
+    }
     const std::string& path() const { return path_; }
 
 private:
@@ -69,6 +80,7 @@ private:
     double fps_ = 0;
     uint64_t total_ = 0;
     long pos_ = 0, last_wanted_ = 0;
+    uint64_t delivered_ = 0;
     int width_ = 0, height_ = 0;
 };
 
