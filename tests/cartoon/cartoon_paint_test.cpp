@@ -401,7 +401,8 @@ TEST(CartoonCli, ATargetFallenShortOfIsSaid) {
     auto reached = run_spt(dir, {"paint", dir.file("f.####.png"), "-o", dir.file("r.spt"), "--style", "cartoon",
                                  "--target-psnr", "20", "--progress", "none"});
     ASSERT_EQ(reached.code, 0) << reached.err;
-    EXPECT_EQ(reached.err, "");
+    // Reached: no warning (the noise makes the default painter's file the smaller, which is said).
+    EXPECT_EQ(reached.err.find("warning"), std::string::npos) << reached.err;
 }
 
 // Text whose polygons cannot reach 36 dB alone: stamps make up the rest, and the outline is the

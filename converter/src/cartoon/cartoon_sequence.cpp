@@ -12,6 +12,7 @@
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/inter_frame.hpp"
 #include "cartoon/retrace_outline.hpp"
+#include "paint/rate_control.hpp"
 #include "paint/worker_pool.hpp"
 #include "spt/concat.hpp"
 #include "spt/reader.hpp"
@@ -164,7 +165,7 @@ Result<KeyFrame> choose_key(const cv::Mat& rgb, const paint::ImageView& model, c
         if (std::getenv("SPT_CARTOON_DEBUG"))
             std::fprintf(stderr, "key frame %u: %zu colours cost %.0f, %zu colours cost %.0f at %.2f dB\n", index,
                          k->fill.palette.size(), frame_cost(k->frame), alt->fill.palette.size(), frame_cost(alt->frame), p);
-        if (!(frame_cost(alt->frame) < frame_cost(k->frame) && p >= opts.paint.target_psnr - 0.005)) break;
+        if (!(frame_cost(alt->frame) < frame_cost(k->frame) && paint::reaches_target(p, opts.paint.target_psnr))) break;
         k = std::move(alt);
     }
     return k;
@@ -271,7 +272,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             in.paint.seed = video::frame_seed(opts.paint.seed, index);
             auto r = paint_inter_frame(in);
             if (!r) return r.error();
-            if (opts.fill.search_tolerance) {
+            if (opts.fill.search_tolerance && !r->unchanged && !r->patched) {
                 // The regions it traced anew may take a coarser outline.
                 const std::vector<bool> retraced = retraced_regions(fill, r->frame);
                 auto paint_at = [&](double tolerance) -> Result<InterFrame> {
@@ -298,7 +299,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             // kept when it comes closer.
             const double target = opts.paint.target_psnr;
             std::optional<KeyFrame> fresh;
-            if (target > 0 && paint::psnr(model, r->canvas.rgb.data()) < target - 0.005) {
+            if (target > 0 && !r->unchanged && !paint::reaches_target(paint::psnr(model, r->canvas.rgb.data()), target)) {
                 auto chosen = choose_key(rgb, model, **renderer, setup, opts, index, parallel);
                 if (!chosen) return chosen.error();
                 if (paint::psnr(model, chosen->canvas.rgb.data()) > paint::psnr(model, r->canvas.rgb.data()))
@@ -335,7 +336,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             rep.min_psnr = p;
             rep.min_psnr_frame = uint32_t(rep.frames);
         }
-        if (opts.paint.target_psnr > 0 && p < opts.paint.target_psnr - 0.005) ++rep.frames_short;
+        if (!paint::reaches_target(p, opts.paint.target_psnr)) ++rep.frames_short;
         ++rep.frames;
         ++index;
         ++since_key;

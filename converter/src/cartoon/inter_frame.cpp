@@ -7,6 +7,7 @@
 #include "cartoon/frame_diff.hpp"
 #include "cartoon/shape_cost.hpp"
 #include "cartoon/stamp_keep.hpp"
+#include "paint/change_mask.hpp"
 #include "paint/worker_pool.hpp"
 #include "spt/reader.hpp"
 
@@ -94,8 +95,8 @@ Result<InterFrame> plan_variant(const InterInput& in, bool lenient) {
     return r;
 }
 
-// The new stamps, painted on the plan's canvas to the target.
-void paint_stamps(const InterInput& in, InterFrame& r) {
+// The new stamps, painted on the plan's canvas to the target; only inside `within` when given.
+void paint_stamps(const InterInput& in, InterFrame& r, const std::vector<uint8_t>* within = nullptr) {
     Frame& f = r.frame;
     // A stamp must pay for itself 16 times more (kResidualLambdaScale). (12 frames at 36 dB,
     // inter frames' lambda times 1 / 2 / 4 / 8 / 16 / 32 / 64: butterfly 91,611 / 85,228 / 80,717 /
@@ -109,7 +110,12 @@ void paint_stamps(const InterInput& in, InterFrame& r) {
         // 7 x 7 mean squared error over 4 times the target's, then wherever the error is, gave
         // butterfly 61,559 bytes instead of 61,979, taffy 384,468 instead of 383,993, star 3,982
         // instead of 3,965: not worth a second region.)
-        const std::vector<uint8_t> region = residual_region(in.model, r.canvas, 24, 2);
+        std::vector<uint8_t> region = residual_region(in.model, r.canvas, 24, 2);
+        if (within && !region.empty()) {
+            bool any = false;
+            for (size_t i = 0; i < region.size(); ++i) any |= (region[i] &= (*within)[i]) != 0;
+            if (!any) region.clear();
+        }
         if (!region.empty()) {
             std::vector<Stroke> stamps;
             paint::paint(in.model, r.canvas, *in.renderer, *in.setup, po, stamps, &region);
@@ -120,6 +126,19 @@ void paint_stamps(const InterInput& in, InterFrame& r) {
         }
     }
     r.cost = frame_cost(f);
+}
+
+// The patch: every stroke of the previous frame stays where it is, and stamps are painted only
+// where the source changed (`changed`), so that the frame costs what changed.
+InterFrame plan_patch(const InterInput& in, const std::vector<uint8_t>& changed) {
+    InterFrame r;
+    r.frame.type = FrameType::Inter;
+    r.patched = true;
+    r.canvas = *in.shown;
+    r.kept_psnr = paint::psnr(in.model, r.canvas.rgb.data());
+    for (const Stroke& s : *in.live) r.polygons_kept += s.kind != StrokeKind::Stamp;
+    paint_stamps(in, r, &changed);
+    return r;
 }
 
 bool same_plan(const Frame& a, const Frame& b) {
@@ -138,6 +157,36 @@ bool better_at_target(const InterFrame& a, const InterFrame& b, const paint::Ima
 }
 
 Result<InterFrame> paint_inter_frame(const InterInput& in) {
+    // What changed since the previous frame, by more than the target's RMS error (without a
+    // target, the previous painting's own): nothing, and the frame codes nothing.
+    const double psnr_before = paint::psnr(in.model, in.shown->rgb.data());
+    const double rms = paint::rms_of_psnr(in.paint.target_psnr > 0 ? in.paint.target_psnr : psnr_before);
+    const paint::ChangeMask changed =
+        paint::changed_pixels(in.cur.data, in.prev.data, in.model.width, in.model.height, rms, paint::kChangeGrow);
+    if (changed.empty()) {
+        InterFrame r;
+        r.frame.type = FrameType::Inter;
+        r.canvas = *in.shown;
+        r.kept_psnr = psnr_before;
+        r.unchanged = true;
+        for (const Stroke& s : *in.live) r.polygons_kept += s.kind != StrokeKind::Stamp;
+        return r;
+    }
+    // Otherwise three plans: the patch (every stroke kept, stamps where the source changed),
+    // and the retraced frame, strict and lenient; the cheapest at the target is written
+    // (better_at_target), so a frame never costs more than patching what changed.
+    InterFrame patch = plan_patch(in, changed.mask);
+    auto retraced = paint_retraced(in);
+    if (!retraced) return retraced.error();
+    const double target = in.paint.target_psnr;
+    bool take_patch = !better_at_target(patch, *retraced, in.model, target);
+    if (!(target > 0))
+        take_patch = patch.cost <= retraced->cost ||
+                     paint::psnr(in.model, patch.canvas.rgb.data()) > paint::psnr(in.model, retraced->canvas.rgb.data());
+    return take_patch ? std::move(patch) : std::move(*retraced);
+}
+
+Result<InterFrame> paint_retraced(const InterInput& in) {
     // The two plans are independent (each reads the inputs, the renderer's caches are thread
     // safe): with more than one thread the lenient one is made beside the strict one.
     const bool parallel = paint::resolve_threads(in.paint.threads) > 1;

@@ -39,11 +39,21 @@ struct InterFrame {
     uint64_t polygons_added = 0, polygons_kept = 0, stamps = 0;
     uint32_t stood_in = 0, left_out = 0;
     bool lenient = false;        // the lenient painting was the cheaper
+    bool unchanged = false;      // the source did not change: the frame codes nothing
+    bool patched = false;        // the patch (every stroke kept, stamps where it changed) won
     double cost = 0;             // estimated bytes
     double kept_psnr = 0;        // before the new stamps
 };
 
+// The frame: where the source did not change since the previous frame (by more than the
+// target's RMS error), nothing is touched; a frame where nothing changed codes nothing.
+// Otherwise the cheapest at the target of the patch (every stroke kept, stamps painted only
+// where the source changed) and the retraced frame (paint_retraced).
 Result<InterFrame> paint_inter_frame(const InterInput& in);
+
+// The frame retraced: the strict and lenient plans above, the cheaper at the target.
+Result<InterFrame> paint_retraced(const InterInput& in);
+
 
 // Of `a` and `b`, painted to `target_psnr` of `model`, whether `b` is better: both reach the
 // target and `b` costs fewer estimated bytes; only `b` reaches it; or neither does and `b` is

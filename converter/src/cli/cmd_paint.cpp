@@ -14,7 +14,9 @@
 #include "cli/paint_plan.hpp"
 #include "cli/paint_progress.hpp"
 #include "cli/paint_scene_still.hpp"
-#include "cli/still_setup.hpp"
+#include "job/painterly_sequence.hpp"
+#include "job/painterly_still.hpp"
+#include "job/still_setup.hpp"
 #include "io/image_io.hpp"
 #include "io/trial_output.hpp"
 #include "io/sequence.hpp"
@@ -36,46 +38,9 @@ int fail(const std::string& msg) { return command_failed("paint", msg); }
 
 }  // namespace
 
-// Sequences and videos go to the video encoder (converter/src/video), with the same painting
-// options as a still.
+// Sequences and videos go to the video encoder (job/painterly_sequence.hpp).
 int video_options(const PaintCommandOptions& o, video::VideoPaintOptions& v) {
-    if (!o.preview.empty() || !o.side_by_side.empty())
-        return fail("--preview and --side-by-side are for still images; render a sequence with "
-                    "'spt render " + o.output + " -o frame.####.png'");
-    if (!o.set_sizes.empty())
-        return fail("--set-sizes is not supported for sequences yet; use --sets N");
-    v.input = o.input;
-    v.output = o.output;
-    v.frames = o.frames;
-    v.fps = o.fps;
-    v.skip_bad_frames = o.skip_bad_frames;
-    v.keyframe_interval = o.keyframe_interval;
-    v.roi_file = o.roi_file;
-    v.cut_threshold = o.cut_threshold;
-    if (!video::parse_flow_method(o.flow, v.flow))
-        return fail("--flow: unknown method '" + o.flow + "' (dis-ultrafast, dis-fast, dis-medium, farneback)");
-    v.block_size = o.block_size;
-    v.flow_orientation = o.flow_orientation;
-    v.max_inter_strokes = o.max_inter_strokes;
-    v.paint = o.paint;
-    v.paint.rois.clear();  // --roi rectangles apply to every frame; --roi-file ones per frame range
-    for (size_t i = 0; i < o.cli_roi_count && i < o.rois.size(); ++i) v.paint.rois.push_back(o.rois[i].rect);
-    v.sets = o.sets;
-    v.background = o.background;
-    v.stored_coding = o.stored;
-    v.coding = o.coding;
-    v.target_bytes = o.target_bytes;
-    v.target_bytes_per_second = o.target_bytes_per_second;
-    v.color_encoding = o.color_encoding;
-    v.alpha = o.alpha;
-    v.scene_read.colorspace = o.colorspace;
-    v.scene_read.ocio_config = o.ocio_config;
-    v.scene_read.layer = o.layer;
-    if (!o.templates_dir.empty()) {
-        auto t = io::load_templates(o.templates_dir);
-        if (!t) return fail(t.error().message);
-        v.templates = std::move(t.value());
-    }
+    if (Status st = job::painterly_video_options(o, v); !st) return fail(st.error().message);
     return -1;
 }
 
@@ -99,12 +64,7 @@ Status write_side_by_side(const std::string& path, const io::Image& src, const C
 }
 
 std::vector<std::pair<std::string, std::string>> still_metadata(const PaintCommandOptions& o) {
-    return {
-        {"software", std::string("spt ") + library_version()},
-        {"source", printable_text(std::filesystem::path(o.input).filename().string())},  // names need not be UTF-8
-        {"painter.seed", std::to_string(o.paint.seed)},
-        {"painter.options", printable_text(o.canonical())},
-    };
+    return job::painting_metadata(o);
 }
 
 int paint_still(const PaintCommandOptions& o) {
@@ -131,76 +91,20 @@ int paint_still(const PaintCommandOptions& o) {
     if (scene)
         for (const std::string& w : scene->warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
     const uint32_t W = img->width, H = img->height;
-
-    auto still = still_setup(o, W, H);
-    if (!still) return fail(still.error().message);
-    paint::PaintSetup setup = std::move(still->setup);
-    paint::PaintOptions po = std::move(still->paint);
-    StreamInfo info;
-    info.rois = std::move(still->rois);
-
-    auto renderer = Renderer::create(setup.header, setup.templates);
-    if (!renderer) return fail("cannot set up the renderer: " + renderer.error().message);
-
-    info.header = setup.header;
-    info.templates = setup.templates;
-    info.metadata = still_metadata(o);
-    WriterOptions wo;
-    wo.coding = o.stored ? Coding::Stored : o.coding == 1 ? Coding::Range : Coding::Replay;
-    const paint::ImageView model0{W, H, img->rgb.data()};
-    if (o.target_bytes > 0) {
-        // Rate control (paint/rate_control.hpp): full paints at searched lambdas, each coded to
-        // a trial file that has no name (io/trial_output.hpp) to measure its exact size.
-        auto trial_file = io::TrialOutput::create(o.output);
-        if (!trial_file) return fail(trial_file.error().message);
-        WriterOptions two = wo;
-        two.atomic_rename = false;  // the trial file is never linked anywhere
-        auto trial = [&](double lambda) {
-            paint::PaintOptions tp = po;
-            tp.lambda = lambda;
-            tp.target_psnr = 0;
-            Canvas c(W, H, o.background);
-            std::vector<Stroke> out;
-            const paint::PaintStats ts = paint::paint(model0, c, **renderer, setup, tp, out);
-            paint::RatePoint p{lambda, ~uint64_t(0), ts.psnr};
-            auto w = Writer::create(trial_file->path(), info, two);
-            if (!w) return p;
-            Frame f;
-            f.added = std::move(out);
-            f.replay = paint::replay_info(setup, tp, W, H);
-            if ((*w)->append(f) && (*w)->finish()) p.bytes = (*w)->stats().total_bytes;
-            return p;
-        };
-        po.lambda = search_target_bytes(o, trial, po.lambda);
+    PaintProgress progress(o.progress, o.paint.max_strokes, o.paint.target_psnr, int(job::still_set_count(o, W, H)));
+    job::StillTarget to;
+    to.path = o.output;
+    to.metadata = still_metadata(o);
+    to.progress = [&](uint64_t n, int set, double db) { progress.update(n, set, db); return true; };
+    auto painted = job::paint_painterly_still(o, *img, to);
+    if (!painted) {
+        progress.finish(false, 0, 0, painted.error().message);
+        return fail(painted.error().message);
     }
-
-    Canvas canvas(W, H, o.background);
-    std::vector<Stroke> strokes;
-    PaintProgress progress(o.progress, po.max_strokes, po.target_psnr, int(setup.header.sets.size()));
-    const paint::ImageView model{W, H, img->rgb.data()};
-    const paint::PaintStats st = paint::paint(
-        model, canvas, **renderer, setup, po, strokes, nullptr,
-        [&](uint64_t n, int set, double db) { progress.update(n, set, db); return true; });
     const double paint_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-    auto writer = Writer::create(o.output, info, wo);
-    if (!writer) {
-        progress.finish(false, st.strokes, st.psnr, writer.error().message);
-        return fail(writer.error().message);
-    }
-    Frame frame;
-    frame.index = 0;
-    frame.type = FrameType::Key;
-    frame.added = std::move(strokes);
-    frame.replay = paint::replay_info(setup, po, W, H);  // coding 2 replays the painter's candidates
-    Status s = (*writer)->append(frame);
-    if (s) s = (*writer)->finish();
-    if (!s) {
-        (*writer)->abort();
-        progress.finish(false, st.strokes, st.psnr, s.error().message);
-        return fail(s.error().message);  // names the file
-    }
-    const uint64_t bytes = (*writer)->stats().total_bytes;
+    const paint::PaintStats& st = painted->stats;
+    const Canvas& canvas = painted->canvas;
+    const uint64_t bytes = painted->bytes;
 
     if (!o.preview.empty()) {
         if (Status p = io::write_image(o.preview, canvas); !p) return fail(p.error().message);

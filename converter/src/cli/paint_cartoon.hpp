@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "cli/paint_options.hpp"
+#include "job/cartoon_job.hpp"
 
 namespace spt::cli {
 
-using Metadata = std::vector<std::pair<std::string, std::string>>;
+using job::Metadata;
 
 // Runs the command for options parsed with style "cartoon"; returns the exit code.
 int paint_cartoon(const PaintCommandOptions& o);

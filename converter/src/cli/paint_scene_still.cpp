@@ -10,7 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/paint_progress.hpp"
-#include "cli/still_setup.hpp"
+#include "job/still_setup.hpp"
 #include "io/image_io.hpp"
 #include "io/trial_output.hpp"
 #include "spt/color.hpp"
@@ -126,7 +126,7 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
     const auto t0 = std::chrono::steady_clock::now();
     for (const std::string& w : img.warnings) std::fprintf(stderr, "spt paint: warning: %s\n", w.c_str());
     const uint32_t W = img.width, H = img.height;
-    auto still = still_setup(o, W, H);
+    auto still = job::still_setup(o, W, H);
     if (!still) return fail(still.error().message);
     const paint::PaintSetup setup = std::move(still->setup);
     paint::PaintOptions po = std::move(still->paint);
@@ -177,7 +177,7 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
             if (write(trial_file->path(), *sp, tp, bytes, two)) p.bytes = bytes;
             return p;
         };
-        po.lambda = search_target_bytes(o, trial, po.lambda);
+        po.lambda = job::search_target_bytes(o, trial, po.lambda);
     }
 
     PaintProgress progress(o.progress, po.max_strokes, po.target_psnr, int(setup.header.sets.size()));

@@ -25,4 +25,10 @@ std::string TrialOutput::explain(std::string message) const {
     return message;
 }
 
+Status TrialOutput::keep() {
+    Status s = file_.commit();
+    if (!s) return make_error(s.error().code, explain(s.error().message));
+    return s;
+}
+
 }  // namespace spt::io

@@ -22,6 +22,8 @@ public:
     const std::string& path() const { return path_; }
     // The trial's name in a message: a Writer's error names path(), which means nothing to a user.
     std::string explain(std::string message) const;
+    // Links the trial into place as the output (replacing what is there): the trial won.
+    Status keep();
 
 private:
     AtomicFile file_;  // discarded (never committed) when this goes

@@ -25,6 +25,13 @@ struct RateDefaults {
 };
 RateDefaults rate_defaults(double target_psnr);
 
+// A painting "reaches" a PSNR target when it is at most this far below it: the searches and
+// the short-of-target warnings all judge by it, so one rule decides what counts as reached.
+constexpr double kTargetSlackDb = 0.005;
+inline bool reaches_target(double psnr, double target_psnr) {
+    return !(target_psnr > 0) || psnr >= target_psnr - kTargetSlackDb;
+}
+
 // `trial(lambda)` paints at lambda and returns the coded size and PSNR. Returns the point with
 // the largest size not above `target_bytes` (or the smallest point when none fits), after at
 // most `max_trials` paints. Sizes within `tolerance` (relative) below the target stop early.

@@ -6,7 +6,9 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "paint/change_mask.hpp"
 #include "paint/orientation.hpp"
+#include "paint/rate_control.hpp"
 #include "spt/reader.hpp"
 #include "spt/replay.hpp"
 #include "video/stroke_cull.hpp"
@@ -16,6 +18,7 @@ namespace spt::video {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
 
 double seconds_since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -99,6 +102,7 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptio
     info.metadata = std::move(metadata);
     WriterOptions wo;
     wo.coding = opts.stored_coding ? Coding::Stored : opts.coding == 1 ? Coding::Range : Coding::Replay;
+    wo.atomic_rename = opts.atomic_rename;
     Result<std::unique_ptr<Writer>> w = Writer::create(opts.output, info, wo);
     if (!w) return w.error();
     e->writer_ = std::move(*w);
@@ -255,6 +259,68 @@ void VideoEncoder::update_orientation(const paint::ImageView& model, const cv::M
     }
 }
 
+// Of `candidates` (indices into live_, increasing), those whose footprint meets `changed`.
+Result<std::vector<uint32_t>> VideoEncoder::strokes_touching(const std::vector<uint32_t>& candidates,
+                                                             const paint::ChangeMask& changed) const {
+    std::vector<uint32_t> out;
+    const uint32_t W = setup_.header.width, H = setup_.header.height;
+    Mask scratch;
+    for (uint32_t i : candidates) {
+        if (i >= live_.size()) continue;
+        const Stroke& s = live_[i];
+        const Mask* m = &scratch;
+        int64_t ox = 0, oy = 0;
+        if (s.kind == StrokeKind::Stamp) {
+            m = &renderer_->stamp_footprint(s.stamp.set, s.stamp.tmpl, s.stamp.orient);
+            ox = Renderer::stamp_pixel(s.stamp.x);
+            oy = Renderer::stamp_pixel(s.stamp.y);
+        } else if (Status st = renderer_->stroke_mask(s, scratch); !st) {
+            return st.error();
+        }
+        ox += m->x0;
+        oy += m->y0;
+        // Entirely off the canvas: nothing shows it, and it goes now.
+        const bool off = ox >= int64_t(W) || oy >= int64_t(H) || ox + int64_t(m->w) <= 0 || oy + int64_t(m->h) <= 0;
+        if (off || paint::any_in(changed, W, H, ox, oy, ox + int64_t(m->w), oy + int64_t(m->h))) out.push_back(i);
+    }
+    return out;
+}
+
+// The changed pixels (before widening) whose painted colour (and alpha) is off by more than
+// twice the RMS error `rms` in each channel, as a CV_8U 0/255 mask.
+cv::Mat VideoEncoder::visibly_wrong(const paint::ImageView& model, const paint::ChangeMask& changed, double rms) const {
+    const uint32_t W = model.width, H = model.height;
+    cv::Mat wrong(int(H), int(W), CV_8U, cv::Scalar(0));
+    const bool alpha = model.alpha && canvas_.alpha.size() == size_t(W) * H;
+    const double limit = (alpha ? 4 : 3) * 4 * rms * rms;
+    for (size_t i = 0; i < size_t(W) * H; ++i) {
+        if (!changed.raw[i]) continue;
+        const uint8_t* a = model.rgb + 3 * i;
+        const uint8_t* b = canvas_.rgb.data() + 3 * i;
+        double e = 0;
+        for (int k = 0; k < 3; ++k) e += double(a[k] - b[k]) * double(a[k] - b[k]);
+        if (alpha) e += double(model.alpha[i] - canvas_.alpha[i]) * double(model.alpha[i] - canvas_.alpha[i]);
+        if (e > limit) wrong.data[i] = 255;
+    }
+    return wrong;
+}
+
+// Where this frame may repaint: the changed pixels of the source, and those of the painting
+// (what the frame's motion and removals changed: `before` is the canvas they started from), as
+// a CV_8U 0/255 mask.
+cv::Mat VideoEncoder::touched_area(const paint::ChangeMask& changed, const Canvas& before) const {
+    const uint32_t W = canvas_.width, H = canvas_.height;
+    cv::Mat area(int(H), int(W), CV_8U);
+    const bool alpha = canvas_.alpha.size() == size_t(W) * H && before.alpha.size() == canvas_.alpha.size();
+    for (size_t i = 0; i < size_t(W) * H; ++i) {
+        const uint8_t* a = canvas_.rgb.data() + 3 * i;
+        const uint8_t* b = before.rgb.data() + 3 * i;
+        const bool painted = a[0] != b[0] || a[1] != b[1] || a[2] != b[2] || (alpha && canvas_.alpha[i] != before.alpha[i]);
+        area.data[i] = changed.mask[i] || painted ? 255 : 0;
+    }
+    return area;
+}
+
 Status VideoEncoder::encode_key(const paint::ImageView& model, Frame& frame, FrameResult& r) {
     frame.type = FrameType::Key;
     frame.removed.clear();
@@ -277,9 +343,29 @@ Status VideoEncoder::encode_key(const paint::ImageView& model, Frame& frame, Fra
 }
 
 Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& gray, Frame& frame,
-                                  FrameResult& r, bool& want_key) {
+                                  FrameResult& r, bool& want_key, bool& unchanged) {
     frame.type = FrameType::Inter;
-    frame.removed = pending_removals_;
+    // The frame touches only what changed since the previous frame: pixels whose source moved
+    // by more than the target's RMS error (without a target, the painting's own). Nothing
+    // changed: the frame codes nothing.
+    const uint32_t W = model.width, H = model.height;
+    const double rms = paint::rms_of_psnr(opts_.paint.target_psnr > 0 ? opts_.paint.target_psnr : last_psnr_);
+    const paint::ChangeMask changed = paint::changed_pixels(model.rgb, prev_rgb_.data(), W, H, rms, paint::kChangeGrow,
+                                                            model.alpha, model.alpha ? prev_alpha_.data() : nullptr);
+    if (changed.empty()) {
+        frame.removed.clear();
+        frame.motion = MotionField{};
+        frame.added.clear();
+        flow_field_ = cv::Mat::zeros(gray.size(), CV_32FC2);
+        r.type = FrameType::Inter;
+        r.removed = 0;
+        unchanged = true;
+        return {};
+    }
+    // Hidden strokes are removed where the frame changes; elsewhere they stay hidden, unmoved.
+    Result<std::vector<uint32_t>> hidden = strokes_touching(pending_removals_, changed);
+    if (!hidden) return hidden.error();
+    frame.removed = std::move(*hidden);
     auto t0 = Clock::now();
     flow_->compute(prev_gray_, gray, flow_field_);
     frame.motion = block_motion(flow_field_, opts_.block_size);
@@ -295,6 +381,7 @@ Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& 
     st = remove_transparent(model, frame, moved);
     if (!st) return st;
     const unsigned threads = unsigned(std::max(0, opts_.paint.threads));
+    const Canvas before = canvas_;
     if (band_) {
         // Only the bands where strokes moved (the canvas holds the rendering of live_).
         Result<double> rows = band_->update(canvas_, live_, frame, moved, threads);
@@ -324,6 +411,11 @@ Status VideoEncoder::encode_inter(const paint::ImageView& model, const cv::Mat& 
     cv::dilate(ref_err_, baseline, cv::Mat::ones(5, 5, CV_8U));
     const double t = opts_.repaint_error;
     cv::Mat grown = (err > t) & (err > baseline + t * 0.5);
+    // Only where the frame changed: the source, or the painting (strokes moved or removed).
+    grown &= touched_area(changed, before);
+    // And every changed pixel the painting shows visibly wrong, however small the thing that
+    // changed (the 7 x 7 mean above dilutes a small lamp until it goes out).
+    grown |= visibly_wrong(model, changed, rms);
     cv::dilate(grown, region, cv::Mat::ones(5, 5, CV_8U));
     r.repaint_fraction = double(cv::countNonZero(region)) / double(region.total());
     if (r.repaint_fraction > opts_.repaint_key_fraction) {
@@ -373,10 +465,11 @@ Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, const uint8_t* a
 
     Frame frame;
     frame.index = next_index_;
+    bool unchanged = false;  // an inter frame where nothing changed: coded empty
     bool key = next_index_ == 0 || r.cut || since_key_ + 1 >= uint32_t(opts_.keyframe_interval);
     if (!key) {
         bool want_key = false;
-        Status st = encode_inter(model, gray, frame, r, want_key);
+        Status st = encode_inter(model, gray, frame, r, want_key, unchanged);
         if (!st) return st.error();
         key = want_key;
     }
@@ -408,8 +501,10 @@ Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, const uint8_t* a
     // Book-keeping for the next frame.
     since_key_ = key ? 0 : since_key_ + 1;
     prev_gray_ = gray;
-    pending_removals_.clear();
-    if (opts_.cull_every > 0 && (next_index_ % uint32_t(opts_.cull_every)) == 0) {
+    prev_rgb_.assign(rgb, rgb + size_t(w) * h * 3);
+    if (model.alpha) prev_alpha_.assign(model.alpha, model.alpha + size_t(w) * h);
+    if (!unchanged) pending_removals_.clear();
+    if (!unchanged && opts_.cull_every > 0 && (next_index_ % uint32_t(opts_.cull_every)) == 0) {
         const auto tc = Clock::now();
         Result<std::vector<uint32_t>> hidden = hidden_strokes(live_, *renderer_, w, h, scratch_);
         if (!hidden) return hidden.error();
@@ -424,6 +519,7 @@ Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, const uint8_t* a
 
     r.live = uint32_t(live_.size());
     r.psnr = paint::psnr(model, canvas_.rgb.data());
+    last_psnr_ = r.psnr;
     r.seconds = seconds_since(t0);
     ++next_index_;
     report_.frames++;
@@ -439,6 +535,11 @@ Result<FrameResult> VideoEncoder::add_frame(const uint8_t* rgb, const uint8_t* a
     report_.strokes_removed += r.removed;
     report_.max_live = std::max<uint64_t>(report_.max_live, live_.size());
     psnr_sum_ += r.psnr;
+    if (r.psnr < report_.min_psnr) {
+        report_.min_psnr = r.psnr;
+        report_.min_psnr_frame = r.index;
+    }
+    if (!paint::reaches_target(r.psnr, opts_.paint.target_psnr)) report_.frames_short++;
     report_.mean_psnr = psnr_sum_ / double(report_.frames);
     report_.bytes = writer_->stats().total_bytes;
     return r;

@@ -13,6 +13,7 @@
 #include <opencv2/core.hpp>
 
 #include "io/roi_file.hpp"
+#include "paint/change_mask.hpp"
 #include "paint/painter.hpp"
 #include "spt/render.hpp"
 #include "spt/result.hpp"
@@ -83,9 +84,14 @@ public:
 private:
     VideoEncoder() = default;
     Status encode_key(const paint::ImageView& model, Frame& frame, FrameResult& r);
+    // `unchanged`: nothing changed since the previous frame, and the frame codes nothing.
     Status encode_inter(const paint::ImageView& model, const cv::Mat& gray, Frame& frame, FrameResult& r,
-                        bool& want_key);
+                        bool& want_key, bool& unchanged);
     void error_map(const paint::ImageView& model, cv::Mat& err) const;
+    Result<std::vector<uint32_t>> strokes_touching(const std::vector<uint32_t>& candidates,
+                                                   const paint::ChangeMask& changed) const;
+    cv::Mat touched_area(const paint::ChangeMask& changed, const Canvas& before) const;
+    cv::Mat visibly_wrong(const paint::ImageView& model, const paint::ChangeMask& changed, double rms) const;
     // Alpha canvases: adds to frame.removed (indices into live_) the strokes that, after the
     // frame's removals and motion, lie mostly over transparent pixels of the model.
     Status remove_transparent(const paint::ImageView& model, Frame& frame, std::vector<Stroke>& moved);
@@ -116,6 +122,8 @@ private:
     std::vector<Stroke> live_;
     Canvas canvas_;
     cv::Mat prev_gray_, flow_field_;
+    std::vector<uint8_t> prev_rgb_, prev_alpha_;  // the previous source frame
+    double last_psnr_ = 0;                        // the previous frame's painting
     cv::Mat ref_err_;  // error the painter left where it last painted, carried by the motion
     std::vector<uint8_t> orient_;      // per-pixel orientation indices (empty: painter's own)
     std::vector<uint8_t> paint_orient_;  // orient_ with this frame's flow orientations

@@ -8,13 +8,13 @@
 #include <functional>
 #include <vector>
 
-#include "cli/paint_options.hpp"
+#include "job/paint_job.hpp"
 #include "paint/painter.hpp"
 #include "paint/rate_control.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
 
-namespace spt::cli {
+namespace spt::job {
 
 struct StillSetup {
     paint::PaintSetup setup;    // header (sizes, background, sets, orientations) and templates
@@ -23,11 +23,11 @@ struct StillSetup {
 };
 
 // Fails, with a message, when the templates cannot be loaded or a ROI lies outside the image.
-Result<StillSetup> still_setup(const PaintCommandOptions& o, uint32_t width, uint32_t height);
+Result<StillSetup> still_setup(const PaintJob& o, uint32_t width, uint32_t height);
 
 // --target-bytes: the lambda whose painting (`trial`, one paint and code per call) comes
 // closest to o.target_bytes, searched from `lambda` and reported on stderr.
-double search_target_bytes(const PaintCommandOptions& o, const std::function<paint::RatePoint(double)>& trial,
+double search_target_bytes(const PaintJob& o, const std::function<paint::RatePoint(double)>& trial,
                            double lambda);
 
-}  // namespace spt::cli
+}  // namespace spt::job

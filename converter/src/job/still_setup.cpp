@@ -1,12 +1,12 @@
-#include "cli/still_setup.hpp"
+#include "job/still_setup.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <string>
 
-namespace spt::cli {
+namespace spt::job {
 
-Result<StillSetup> still_setup(const PaintCommandOptions& o, uint32_t W, uint32_t H) {
+Result<StillSetup> still_setup(const PaintJob& o, uint32_t W, uint32_t H) {
     std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;
     auto templates = paint_templates(o.templates_dir);
     if (!templates) return templates.error();
@@ -33,7 +33,7 @@ Result<StillSetup> still_setup(const PaintCommandOptions& o, uint32_t W, uint32_
     return s;
 }
 
-double search_target_bytes(const PaintCommandOptions& o, const std::function<paint::RatePoint(double)>& trial,
+double search_target_bytes(const PaintJob& o, const std::function<paint::RatePoint(double)>& trial,
                            double lambda) {
     const paint::RatePoint best = paint::search_bytes(trial, o.target_bytes, 0.03, 9, lambda);
     std::fprintf(stderr, "spt paint: --target-bytes %llu: lambda %.4g gives %llu bytes (%+.1f%%), %.2f dB\n",
@@ -42,4 +42,4 @@ double search_target_bytes(const PaintCommandOptions& o, const std::function<pai
     return best.lambda;
 }
 
-}  // namespace spt::cli
+}  // namespace spt::job
