@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "io/json.hpp"
+#include "plan/plan_args.hpp"
 #include "spt/atomic_file.hpp"
 #include "spt_json/json.hpp"
 
@@ -184,6 +185,12 @@ Result<Plan> parse_plan(const std::string& text, const std::string& src) {
     if (p.shots.back().last != p.last)
         return make_error(Code::InvalidArgument, src + ": the shots end at frame " + std::to_string(p.shots.back().last) +
                                                      ", the plan's frames at " + std::to_string(p.last));
+    // The task's command line is built from these: none may pass for an option.
+    if (p.input.empty() || p.input[0] == '-')
+        return make_error(Code::InvalidArgument, src + ": \"input\" '" + p.input + "' is not a path");
+    if (p.fps.empty() || p.fps.find_first_not_of("0123456789./") != std::string::npos)
+        return make_error(Code::InvalidArgument, src + ": \"fps\" '" + p.fps + "' is not a frame rate");
+    if (Status c = check_paint_args(p.paint_args, src); !c) return c.error();
     if (p.id != compute_id(p))
         return make_error(Code::InvalidArgument, src + ": \"id\" is not the plan's checksum: the plan was edited by hand "
                                                      "(write a new one with spt plan)");

@@ -1,0 +1,56 @@
+// Crafted plans (issue 36): a plan comes from anywhere and its id is a checksum anyone can
+// recompute, so what it may make a task do is limited by what it may hold, not by the id.
+#include "hostile/plan_test_util.hpp"
+
+using namespace spt_test;
+
+#define EXPECT_HAS(text, what) EXPECT_NE((text).find(what), std::string::npos) << "missing \"" << (what) << "\" in: " << (text)
+
+// Issue 36 item 1: paint_args ending in "-o", "victim.txt" wrote the shot over victim.txt and
+// never wrote the asked-for output, with exit 0. Every argument that is not a painter option
+// is now refused, naming the plan and the argument, and nothing is written.
+TEST(HostilePlan, PaintArgsMayHoldOnlyPainterOptions) {
+    TempDir d;
+    const std::string plan = d.file("p.json");
+    const std::string text = tiny_plan(d, plan);
+    ASSERT_FALSE(text.empty());
+    const std::string victim = d.file("victim.txt");
+    const std::vector<std::vector<std::string>> crafted = {
+        {"-o", victim},          {"--output", victim},       {"--output=" + victim}, {victim},
+        {"--plan", plan},        {"--shot", "1"},            {"--threads", "2"},     {"--progress", "json"},
+        {"--preview", victim},   {"--side-by-side", victim}, {"--seed", "5"},        {"--frames", "1-1"},
+        {"--lambda", "-o"},      {"--lambda"},               {"--stored=" + victim}, {"-h"},
+    };
+    for (const auto& extra : crafted) {
+        write_text(victim, "mine");
+        write_text(d.file("c.json"), with_paint_args(text, extra));
+        const auto r = run_spt(d, {"paint", "--plan", d.file("c.json"), "--shot", "0", "-o", d.file("asked.spt")});
+        // The argument named: the option, or for a value that would pass for one, the value.
+        const std::string named = extra.size() == 2 && extra[0] == "--lambda" ? extra[1] : extra[0];
+        EXPECT_TRUE(failed_with(r, 1, {d.file("c.json"), "\"paint_args\"", "'" + named + "'",
+                                       "a plan may hold only painter options"}))
+            << extra.front();
+        EXPECT_EQ(slurp(victim), "mine") << extra.front();
+        EXPECT_FALSE(fs::exists(d.file("asked.spt"))) << extra.front();
+    }
+    // The plan's input and frame rate become arguments too: neither may pass for an option.
+    std::string t = text;
+    const size_t in = t.find("\"input\": \"");
+    t.insert(in + 10, "--output=" + victim + "#");
+    write_text(d.file("c.json"), resign(t));
+    auto r = run_spt(d, {"paint", "--plan", d.file("c.json"), "--shot", "0", "-o", d.file("asked.spt")});
+    EXPECT_TRUE(failed_with(r, 1, {d.file("c.json"), "\"input\""}));
+    t = text;
+    const size_t fps = t.find("\"fps\": \"");
+    t.insert(fps + 8, "--output=" + victim + "#");
+    write_text(d.file("c.json"), resign(t));
+    r = run_spt(d, {"paint", "--plan", d.file("c.json"), "--shot", "0", "-o", d.file("asked.spt")});
+    EXPECT_TRUE(failed_with(r, 1, {d.file("c.json"), "\"fps\""}));
+    EXPECT_EQ(slurp(victim), "mine");
+    // Painter options re-signed into a plan are a plan's own business: they paint.
+    write_text(d.file("c.json"), with_paint_args(text, {"--max-strokes", "20", "--stored", "--lambda=0.5"}));
+    r = run_spt(d, {"paint", "--plan", d.file("c.json"), "--shot", "0", "-o", d.file("asked.spt")});
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(d.file("asked.spt")));
+}
+
