@@ -54,3 +54,24 @@ TEST(HostilePlan, PaintArgsMayHoldOnlyPainterOptions) {
     EXPECT_TRUE(fs::exists(d.file("asked.spt")));
 }
 
+// Issue 36 item 2: a shot that failed (here: its input is gone) removed whatever was at -o, a
+// file of the user's or an empty folder. It now removes only an output this run linked there.
+TEST(HostilePlan, AFailedShotRemovesOnlyWhatItCreated) {
+    TempDir d;
+    const std::string plan = d.file("p.json");
+    ASSERT_FALSE(tiny_plan(d, plan).empty());
+    fs::rename(d.path / "seq", d.path / "gone");
+    write_text(d.file("keep.spt"), "keep");
+    fs::create_directories(d.path / "folder");
+    for (const char* out : {"keep.spt", "folder"}) {
+        const auto r = run_spt(d, {"paint", "--plan", plan, "--shot", "0", "-o", d.file(out)});
+        EXPECT_EQ(r.code, 1) << out << ": " << r.err;
+    }
+    EXPECT_EQ(slurp(d.file("keep.spt")), "keep");
+    EXPECT_TRUE(fs::is_directory(d.path / "folder"));
+    // With its input back, the same shot paints over the old file.
+    fs::rename(d.path / "gone", d.path / "seq");
+    const auto r = run_spt(d, {"paint", "--plan", plan, "--shot", "0", "-o", d.file("keep.spt")});
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(run_spt(d, {"verify", d.file("keep.spt")}).code, 0);
+}

@@ -1,5 +1,7 @@
 #include "cli/paint_plan.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -22,6 +24,29 @@ namespace fs = std::filesystem;
 namespace {
 
 int fail(const std::string& msg) { return command_failed("paint", msg); }
+
+// What is at a path (not following a symlink): a failed shot removes its output only when the
+// file there is not what was there before it ran, i.e. this run linked it into place.
+struct PathIdentity {
+    bool exists = false;
+    dev_t dev = 0;
+    ino_t ino = 0;
+    static PathIdentity of(const std::string& path) {
+        struct stat st;
+        if (::lstat(path.c_str(), &st) != 0) return {};
+        return {true, st.st_dev, st.st_ino};
+    }
+    bool same(const PathIdentity& o) const { return exists == o.exists && dev == o.dev && ino == o.ino; }
+};
+
+// Removes `path` if it is a regular file this run created (not there, or another file, before).
+void remove_if_created(const std::string& path, const PathIdentity& before) {
+    struct stat st;
+    if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return;
+    if (PathIdentity{true, st.st_dev, st.st_ino}.same(before)) return;
+    std::error_code ec;
+    fs::remove(path, ec);
+}
 
 const char* mode_name(io::ProgressMode m) {
     switch (m) {
@@ -51,10 +76,10 @@ int paint_shot(const plan::Plan& p, size_t k, const std::string& output, int thr
         return rc == 0 ? fail("the plan's paint_args ask for help") : rc;
     // An interrupted or short shot keeps its finished frames in a valid file; a farm must not
     // take it for a painted shot.
+    const PathIdentity before = PathIdentity::of(output);
     auto settle = [&](int rc, bool interrupted, uint64_t frames) {
-        std::error_code ec;
         if (rc == 0 && !interrupted && frames == s.frames()) return 0;
-        fs::remove(output, ec);
+        remove_if_created(output, before);
         return rc != 0 ? rc : fail(output + ": shot " + std::to_string(k) + " painted " + std::to_string(frames) +
                                        " of its " + std::to_string(s.frames()) + " frames");
     };
