@@ -40,6 +40,12 @@ Status write_text(const std::string& path, const std::string& text) {
     return write_file_atomic(path, text.data(), text.size());
 }
 
+// The shell's `>` and `>>` follow a symlink planted at the name; the wrappers write every
+// marker to a fresh file (mktemp: O_EXCL, a random name) and rename it over the name (mv -T:
+// replaces a symlink, never writes through it or into a folder it points at).
+const char* kPutMarker =
+    "put() { local t; t=$(mktemp \"$1.XXXXXX\") && printf '%s' \"$2\" > \"$t\" && mv -fT -- \"$t\" \"$1\"; }\n";
+
 // The task wrapper: paints one shot, retrying a failed attempt up to `retries` times; leaves
 // run/shot-K.done or run/shot-K.failed, and one "attempt exit-code" line per attempt.
 std::string task_script(const SubmitOptions& o, const std::string& state, const std::string& plan) {
@@ -47,6 +53,7 @@ std::string task_script(const SubmitOptions& o, const std::string& state, const 
     s << "#!/bin/bash\n"
          "# spt farm task: paints shot $1 of the plan; written by spt farm, run by the farm's engine\n"
          "# (which may set SPT_FARM_THREADS to the CPUs it gave the task).\n"
+      << kPutMarker <<
          "k=\"$1\"\n"
          "run=" << shell_quote(run_dir(state)) << "\n"
          "out=$(printf " << shell_quote(state + "/shots/shot-%05d.spt") << " \"$k\")\n"
@@ -56,14 +63,16 @@ std::string task_script(const SubmitOptions& o, const std::string& state, const 
          "  " << shell_quote(o.spt) << " paint --plan " << shell_quote(plan)
       << " --shot \"$k\" -o \"$out\" --progress plain ${SPT_FARM_THREADS:+--threads \"$SPT_FARM_THREADS\"} &\n"
          "  pid=$!\n"
-         "  echo \"$pid\" > \"$run/shot-$k.pid\"\n"
+         "  put \"$run/shot-$k.pid\" \"$pid\n\"\n"
          "  wait \"$pid\"; rc=$?\n"
          "  rm -f \"$run/shot-$k.pid\"\n"
-         "  echo \"$attempt $rc\" >> \"$run/shot-$k.attempts\"\n"
-         "  if [ \"$rc\" = 0 ]; then : > \"$run/shot-$k.done\"; exit 0; fi\n"
+         // The earlier attempts' lines, unless a symlink stands there (it is replaced unread).
+         "  a=\"$run/shot-$k.attempts\"; prev=$( { [ -L \"$a\" ] || cat -- \"$a\"; } 2>/dev/null )\n"
+         "  put \"$a\" \"${prev:+$prev\n}$attempt $rc\n\"\n"
+         "  if [ \"$rc\" = 0 ]; then put \"$run/shot-$k.done\" ''; exit 0; fi\n"
          "  echo \"spt farm: shot $k attempt $attempt failed (exit $rc)\" >&2\n"
          "done\n"
-         ": > \"$run/shot-$k.failed\"\n"
+         "put \"$run/shot-$k.failed\" ''\n"
          "exit 1\n";
     return s.str();
 }
@@ -73,8 +82,8 @@ std::string join_script(const SubmitOptions& o, const std::string& state, const 
     std::vector<std::string> argv = {o.spt, "cat"};
     for (size_t k = 0; k < p.shots.size(); ++k) argv.push_back(shot_file(state, k));
     argv.insert(argv.end(), {"-o", output});
-    return "#!/bin/bash\n# spt farm join: every shot, in order, into the output.\nset -e\n" + shell_line(argv) +
-           "\n: > " + shell_quote(run_dir(state) + "/join.done") + "\n";
+    return "#!/bin/bash\n# spt farm join: every shot, in order, into the output.\nset -e\n" + std::string(kPutMarker) +
+           shell_line(argv) + "\nput " + shell_quote(run_dir(state) + "/join.done") + " ''\n";
 }
 
 std::string job_json(const Submitted& ids, const std::string& output, double submitted,
@@ -131,7 +140,11 @@ Result<SubmitReport> submit_plan(Engine& engine, const SubmitOptions& o) {
             return make_error(Code::BadState, o.plan_path + ": already on the farm (" + st->ids.engine + " jobs " +
                                                   st->ids.tasks_id + " " + st->ids.join_id + "); see spt farm status");
     }
+    // Files are written into these folders by name: a symlink in their place would send them
+    // elsewhere.
     for (const char* d : {"", "/shots", "/logs", "/run"}) {
+        if (fs::is_symlink(state + d, ec))
+            return make_error(Code::BadState, state + d + ": is a symlink; spt farm writes only into folders of its own");
         fs::create_directories(state + d, ec);
         if (ec) return make_error(Code::IoError, state + d + ": cannot create: " + ec.message());
     }
@@ -141,7 +154,7 @@ Result<SubmitReport> submit_plan(Engine& engine, const SubmitOptions& o) {
         const std::string f = shot_file(state, k);
         if (fs::exists(f) && plan::verify_shot(*p, k, f)) {
             rep.reused.push_back(k);
-            std::ofstream(marker(state, k, "done")).flush();
+            if (Status st = write_text(marker(state, k, "done"), ""); !st) return st.error();
             fs::remove(marker(state, k, "failed"), ec);
             continue;
         }
@@ -163,10 +176,13 @@ Result<SubmitReport> submit_plan(Engine& engine, const SubmitOptions& o) {
         char log[40];
         std::snprintf(log, sizeof log, "/logs/shot-%zu.log", k);
         t.log = state + log;
+        // The engine's own writer opens the log by name: a symlink there is removed first.
+        if (fs::is_symlink(t.log, ec)) fs::remove(t.log, ec);
         job.tasks.push_back(std::move(t));
     }
     job.join = {"/bin/bash", join};
     job.join_log = state + "/logs/join.log";
+    if (fs::is_symlink(job.join_log, ec)) fs::remove(job.join_log, ec);
     job.retries = o.retries;
     job.partition = o.partition;
     job.extra = o.extra;

@@ -4,11 +4,11 @@
 // after a node failure; failures of the task itself are retried by the task's wrapper
 // (farm_job.cpp) inside its allocation, because a job requeued with `scontrol requeue` waits
 // behind a BeginTime delay (measured here: still pending after 15 s).
-#include <fstream>
 #include <sstream>
 
 #include "farm/engine.hpp"
 #include "farm/process.hpp"
+#include "spt/atomic_file.hpp"
 
 namespace spt::farm {
 
@@ -19,6 +19,10 @@ std::string trim(std::string s) {
     // --parsable prints "id" or "id;cluster".
     const size_t semi = s.find(';');
     return semi == std::string::npos ? s : s.substr(0, semi);
+}
+
+Status write_text(const std::string& path, const std::string& text) {
+    return write_file_atomic(path, text.data(), text.size());
 }
 
 class SlurmEngine final : public Engine {
@@ -32,8 +36,9 @@ public:
         if (!job.partition.empty()) common.push_back("--partition=" + job.partition);
         if (!job.tasks.empty()) {
             // One script for the array: task i runs the command of shot i.
+            // Written like every file of the state folder: whole, and never through a symlink.
             const std::string script = job.state_dir + "/slurm_tasks.sh";
-            std::ofstream s(script, std::ios::trunc);
+            std::ostringstream s;
             s << "#!/bin/bash\n# spt farm: one shot per array task (array index = shot)\n"
                  "export SPT_FARM_THREADS=\"${SLURM_CPUS_PER_TASK:-}\"  # --cpus-per-task, when given\n"
                  "case \"$SLURM_ARRAY_TASK_ID\" in\n";
@@ -43,8 +48,7 @@ public:
                 list += (list.empty() ? "" : ",") + std::to_string(t.shot);
             }
             s << "esac\necho \"spt farm: no shot $SLURM_ARRAY_TASK_ID in this job\" >&2\nexit 2\n";
-            s.close();
-            if (!s) return make_error(Code::IoError, script + ": cannot write");
+            if (Status st = write_text(script, s.str()); !st) return st.error();
             std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + job.name, "--array=" + list,
                                              "--requeue", "--ntasks=1", "--output=" + job.state_dir + "/logs/shot-%a.log"};
             argv.insert(argv.end(), common.begin(), common.end());
@@ -55,11 +59,10 @@ public:
             ids.tasks_id = trim(*out);
         }
         const std::string join_script = job.state_dir + "/slurm_join.sh";
-        {
-            std::ofstream s(join_script, std::ios::trunc);
-            s << "#!/bin/bash\n# spt farm: the join, after every shot\nexec " << shell_line(job.join) << "\n";
-            if (!s) return make_error(Code::IoError, join_script + ": cannot write");
-        }
+        if (Status st = write_text(join_script, "#!/bin/bash\n# spt farm: the join, after every shot\nexec " +
+                                                    shell_line(job.join) + "\n");
+            !st)
+            return st.error();
         std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + job.name + "-join", "--ntasks=1",
                                          "--output=" + job.join_log};
         if (!ids.tasks_id.empty())
