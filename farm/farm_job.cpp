@@ -56,7 +56,8 @@ std::string task_script(const SubmitOptions& o, const std::string& state, const 
       << kPutMarker <<
          "k=\"$1\"\n"
          "run=" << shell_quote(run_dir(state)) << "\n"
-         "out=$(printf " << shell_quote(state + "/shots/shot-%05d.spt") << " \"$k\")\n"
+         // The number alone goes through printf: the path may hold a %.
+         "out=" << shell_quote(state + "/shots/shot-") << "\"$(printf %05d \"$k\")\".spt\n"
          "rm -f \"$run/shot-$k.done\" \"$run/shot-$k.failed\"\n"
          "for attempt in $(seq 1 " << (o.retries + 1) << "); do\n"
          "  echo \"spt farm: shot $k attempt $attempt on $(hostname) at $(date -u +%FT%TZ)\"\n"

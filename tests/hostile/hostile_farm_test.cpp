@@ -82,3 +82,18 @@ TEST(HostileFarm, SymlinksInTheStateFolderAreReplacedNotWrittenThrough) {
                             {state + "/shots: is a symlink"}));
 }
 
+// Issue 36 item 9: task.sh used the state folder's path as a printf format, so a plan named
+// with a % painted every shot to a wrong name (or none) and the join found nothing.
+TEST(HostileFarm, APercentInThePlanPathPaintsTheRightShot) {
+    TempDir d;
+    fake_slurm(d);
+    const std::string plan = d.file("p%d%s.json"), state = d.file("p%d%s.farm");
+    ASSERT_FALSE(tiny_plan(d, plan).empty());
+    auto r = run_spt(d, {"farm", "slurm", plan, "-o", d.file("out.spt")});
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* k : {"0", "1"}) EXPECT_EQ(run_bash(state + "/task.sh", k), 0) << k;
+    EXPECT_TRUE(fs::exists(state + "/shots/shot-00000.spt"));
+    EXPECT_TRUE(fs::exists(state + "/shots/shot-00001.spt"));
+    ASSERT_EQ(run_bash(state + "/join.sh"), 0);
+    EXPECT_EQ(run_spt(d, {"verify", d.file("out.spt")}).code, 0);
+}
