@@ -4,11 +4,11 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "farm/process.hpp"
 #include "io/json.hpp"
+#include "plan/bounded_file.hpp"
 #include "plan/plan_parts.hpp"
 #include "spt/atomic_file.hpp"
 #include "spt_json/json.hpp"
@@ -23,16 +23,12 @@ double now_seconds() {
     return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
+// run/shot-K.attempts holds one "attempt exit-code" line per attempt.
+constexpr size_t kMaxAttemptsBytes = size_t(1) << 20;
+
 std::string run_dir(const std::string& state) { return state + "/run"; }
 std::string marker(const std::string& state, size_t shot, const char* what) {
     return run_dir(state) + "/shot-" + std::to_string(shot) + "." + what;
-}
-
-std::string slurp(const std::string& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
 }
 
 // Through spt::AtomicFile like every output: whole or absent, never through a symlink.
@@ -234,7 +230,9 @@ Result<FarmStatus> farm_status(const std::string& plan_path, Engine* engine) {
     st.state_dir = state_dir_for(plan_path);
     const std::string job_path = st.state_dir + "/job.json";
     if (!fs::exists(job_path)) return make_error(Code::BadState, plan_path + ": not submitted to a farm (no " + job_path + ")");
-    Result<json::Value> doc = json::parse(slurp(job_path), job_path);
+    Result<std::string> job_text = plan::read_bounded_file(job_path, plan::kMaxPlanFileBytes, "farm state file");
+    if (!job_text) return job_text.error();
+    Result<json::Value> doc = json::parse(*job_text, job_path, plan::plan_parse_limits());
     if (!doc) return doc.error();
     auto text = [&](const char* k) {
         const json::Value* v = doc->find(k);
@@ -272,8 +270,13 @@ Result<FarmStatus> farm_status(const std::string& plan_path, Engine* engine) {
     st.shots.assign(n, ShotState::Lost);
     st.attempts.assign(n, 0);
     for (size_t k = 0; k < n; ++k) {
-        std::ifstream a(marker(st.state_dir, k, "attempts"));
-        for (std::string line; std::getline(a, line);) st.attempts[k] += !line.empty();
+        // One short line per attempt: a marker grown past the cap is an error, not read.
+        if (const std::string am = marker(st.state_dir, k, "attempts"); fs::exists(am, ec)) {
+            Result<std::string> a = plan::read_bounded_file(am, kMaxAttemptsBytes, "farm state file");
+            if (!a) return a.error();
+            std::istringstream in(*a);
+            for (std::string line; std::getline(in, line);) st.attempts[k] += !line.empty();
+        }
         const auto q = queued->find(k);
         if (fs::exists(marker(st.state_dir, k, "done"), ec) && fs::exists(shot_file(st.state_dir, k), ec))
             st.shots[k] = ShotState::Done;

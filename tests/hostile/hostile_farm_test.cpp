@@ -97,3 +97,18 @@ TEST(HostileFarm, APercentInThePlanPathPaintsTheRightShot) {
     ASSERT_EQ(run_bash(state + "/join.sh"), 0);
     EXPECT_EQ(run_spt(d, {"verify", d.file("out.spt")}).code, 0);
 }
+
+// Issue 36 item 6: spt farm status read each shot's attempts marker line by line without
+// bound; one grown huge (here 256 MiB of zeros, no newline) was read whole into one line.
+TEST(HostileFarm, AHugeAttemptsMarkerIsRefusedNotRead) {
+    TempDir d;
+    fake_slurm(d);
+    const std::string plan = d.file("p.json"), state = d.file("p.farm");
+    ASSERT_FALSE(tiny_plan(d, plan).empty());
+    ASSERT_EQ(run_spt(d, {"farm", "slurm", plan, "-o", d.file("out.spt")}).code, 0);
+    const std::string a = state + "/run/shot-1.attempts";
+    std::ofstream(a, std::ios::binary).flush();
+    fs::resize_file(a, uint64_t(256) << 20);
+    const auto r = run_spt(d, {"farm", "status", plan});
+    EXPECT_TRUE(failed_with(r, 1, {a, "the farm state file is 268435456 bytes, over the limit of 1 MiB"}));
+}

@@ -1,5 +1,7 @@
 // Crafted plans (issue 36): a plan comes from anywhere and its id is a checksum anyone can
 // recompute, so what it may make a task do is limited by what it may hold, not by the id.
+#include <chrono>
+
 #include "hostile/plan_test_util.hpp"
 
 using namespace spt_test;
@@ -74,4 +76,29 @@ TEST(HostilePlan, AFailedShotRemovesOnlyWhatItCreated) {
     const auto r = run_spt(d, {"paint", "--plan", plan, "--shot", "0", "-o", d.file("keep.spt")});
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(run_spt(d, {"verify", d.file("keep.spt")}).code, 0);
+}
+
+// Issue 36 item 6: a 2 GB sparse plan was read whole (4.3 GB of memory, 16 s) before its parse
+// error; spt farm status the same, and its job.json too. The size is now checked first.
+TEST(HostilePlan, APlanOrStateFileOverTheCapIsRefusedBeforeReading) {
+    TempDir d;
+    const std::string plan = d.file("p.json");
+    ASSERT_FALSE(tiny_plan(d, plan).empty());
+    auto sparse = [&](const std::string& path) {
+        std::ofstream(path, std::ios::binary).flush();
+        fs::resize_file(path, uint64_t(256) << 20);  // zeros: no parser gets past byte 0
+    };
+    sparse(d.file("big.json"));
+    const auto t0 = std::chrono::steady_clock::now();
+    auto r = run_spt(d, {"paint", "--plan", d.file("big.json"), "--shot", "0", "-o", d.file("o.spt")});
+    EXPECT_TRUE(failed_with(r, 1, {d.file("big.json"), "the plan file is 268435456 bytes, over the limit of 32 MiB"}));
+    r = run_spt(d, {"farm", "status", d.file("big.json")});
+    EXPECT_TRUE(failed_with(r, 1, {d.file("big.json"), "over the limit of 32 MiB"}));
+    // A sound plan whose farm state was replaced by a huge file.
+    fs::create_directories(d.path / "p.farm" / "run");
+    sparse(d.file("p.farm/job.json"));
+    r = run_spt(d, {"farm", "status", plan});
+    EXPECT_TRUE(failed_with(r, 1, {d.file("p.farm/job.json"), "the farm state file is 268435456 bytes"}));
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
+    EXPECT_FALSE(fs::exists(d.file("o.spt")));
 }

@@ -4,10 +4,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "io/json.hpp"
+#include "plan/bounded_file.hpp"
 #include "plan/plan_args.hpp"
 #include "spt/atomic_file.hpp"
 #include "spt_json/json.hpp"
@@ -103,7 +102,7 @@ std::string compute_id(const Plan& p) {
 }
 
 Result<Plan> parse_plan(const std::string& text, const std::string& src) {
-    Result<json::Value> doc = json::parse(text, src);
+    Result<json::Value> doc = json::parse(text, src, plan_parse_limits());
     if (!doc) return doc.error();
     const json::Value& root = *doc;
     if (!root.is_object()) return make_error(Code::InvalidArgument, src + ": a plan is a JSON object");
@@ -200,11 +199,9 @@ Result<Plan> parse_plan(const std::string& text, const std::string& src) {
 Result<Plan> read_plan(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return make_error(Code::IoError, path + ": no such plan file");
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    if (!in && !in.eof()) return make_error(Code::IoError, path + ": cannot read");
-    return parse_plan(ss.str(), path);
+    Result<std::string> text = read_bounded_file(path, kMaxPlanFileBytes, "plan file");
+    if (!text) return text.error();
+    return parse_plan(*text, path);
 }
 
 Status write_plan(const Plan& p, const std::string& path) {
