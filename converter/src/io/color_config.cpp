@@ -1,5 +1,7 @@
 #include "io/color_config.hpp"
 
+#include "io/ocio_references.hpp"
+
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -97,6 +99,9 @@ Result<ColorSetup> color_config(const std::string& ocio_path) {
             loaded = make_error(Code::IoError, what + ": no such file");
         } else if (!OIIO::ColorConfig::supportsOpenColorIO()) {
             loaded = make_error(Code::Unsupported, what + ": this OpenImageIO is built without OpenColorIO");
+        } else if (Status refs = check_ocio_references(path); !refs) {
+            // Before OCIO sees it: a loop of references overflows the stack inside OCIO.
+            loaded = refs;
         } else {
             auto c = std::make_shared<OIIO::ColorConfig>(path);
             if (c->has_error() || c->getNumColorSpaces() <= 0)
