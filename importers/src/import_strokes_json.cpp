@@ -2,6 +2,8 @@
 // what `spt export -o X.json` writes.
 // The fields are read by strokes_json_fields.hpp, the strokes by strokes_json_stroke.cpp; this
 // file reads the templates, the header and the frames, and registers the importer.
+#include <algorithm>
+
 #include "strokes_json_fields.hpp"
 
 #include "spt/color.hpp"
@@ -235,8 +237,21 @@ bool sniff(const std::string& path, std::string_view head) {
     return p != std::string_view::npos;
 }
 
+// The reader's counts, checked by the parser as it goes: a list over them is refused before
+// the parse tree holds it (10 million vertices took 3.7 GB to be found over the limit).
+json::ParseLimits parse_limits(const Limits& lim) {
+    json::ParseLimits p;
+    const uint64_t side = lim.max_template_side;
+    p.max_items_by_key = {{"points", std::max<size_t>({lim.max_polygon_vertices, lim.max_curve_points, 4096})},
+                          {"strokes", lim.max_strokes_per_frame},
+                          {"templates", lim.max_templates},
+                          {"samples", size_t(side * side)}};
+    p.max_tuple_items = 16;  // [x, y], [x, y, width], [dx, dy], an ROI's six numbers
+    return p;
+}
+
 Result<Document> load(const std::string& path, std::string text, const ImportOptions& opts) {
-    auto root = json::parse(text, path);
+    auto root = json::parse(text, path, parse_limits(opts.limits));
     if (!root) return root.error();
     Ctx c(path, opts.limits);
     Error e;

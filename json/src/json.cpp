@@ -2,6 +2,7 @@
 // spt's limits and rules while nlohmann's lexer and parser check the grammar.
 #include "spt_json/json.hpp"
 
+#include <cstdint>
 #include <iterator>
 #include <memory>
 #include <unordered_set>
@@ -115,6 +116,7 @@ private:
     struct Level {
         Value* value;
         std::unique_ptr<std::unordered_set<std::string>> keys;
+        size_t max_items = SIZE_MAX;  // an array's cap (ParseLimits::max_items_by_key)
     };
     std::string_view text_;
     const std::string& src_;
@@ -170,6 +172,11 @@ private:
         if (open_.empty()) {
             v = &root;
         } else if (open_.back().value->type == Type::Array) {
+            if (open_.back().value->items.size() >= open_.back().max_items) {
+                fail(name_of(open_.size() - 1) + " holds more than " + std::to_string(open_.back().max_items) + " items",
+                     Code::LimitExceeded);
+                return nullptr;
+            }
             v = &open_.back().value->items.emplace_back();
         } else {
             v = &open_.back().value->members.emplace_back(std::move(pending_key_), Value()).second;
@@ -191,7 +198,15 @@ private:
         if (open_.size() > lim_.max_depth) return fail("nesting deeper than " + std::to_string(lim_.max_depth), Code::Corrupt);
         Value* v = add(t);
         if (!v) return false;
-        open_.push_back({v, nullptr});
+        size_t cap = SIZE_MAX;
+        if (t == Type::Array && !open_.empty()) {
+            const Value* parent = open_.back().value;
+            if (parent->type == Type::Array && lim_.max_tuple_items) cap = lim_.max_tuple_items;
+            if (parent->type == Type::Object)
+                for (const auto& [key, n] : lim_.max_items_by_key)
+                    if (parent->members.back().first == key) cap = n;
+        }
+        open_.push_back({v, nullptr, cap});
         return true;
     }
 };

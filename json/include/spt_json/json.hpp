@@ -50,6 +50,11 @@ struct ParseLimits {
     size_t max_bytes = size_t(1) << 30;
     uint32_t max_depth = 64;
     size_t max_values = size_t(1) << 26;  // total values in the document
+    // Count checks made while parsing, so that a list over its reader's limit is refused before
+    // the parse tree holds it: an array that is the value of key `first` holds at most `second`
+    // items, and an array inside an array (a tuple) at most `max_tuple_items` (0: no such cap).
+    std::vector<std::pair<std::string, size_t>> max_items_by_key;
+    size_t max_tuple_items = 0;
 };
 
 // Parses a whole document. Errors name `source` (the file name), the line and the column; the
