@@ -2,6 +2,7 @@
 // recompute, so what it may make a task do is limited by what it may hold, not by the id.
 #include <chrono>
 
+#include "converter/ocio_test_config.hpp"
 #include "hostile/plan_test_util.hpp"
 
 using namespace spt_test;
@@ -101,4 +102,30 @@ TEST(HostilePlan, APlanOrStateFileOverTheCapIsRefusedBeforeReading) {
     EXPECT_TRUE(failed_with(r, 1, {d.file("p.farm/job.json"), "the farm state file is 268435456 bytes"}));
     EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
     EXPECT_FALSE(fs::exists(d.file("o.spt")));
+}
+
+// The other side of the rule: every option spt plan writes into paint_args is one a plan may
+// hold, so that no plan spt writes is refused when read (farm status reads the plan first).
+TEST(HostilePlan, EveryOptionSptPlanWritesIsAccepted) {
+    TempDir d;
+    const std::string seq = tiny_sequence(d);
+    write_text(d.file("roi.json"), "{\"rois\": [{\"x\": 0, \"y\": 0, \"w\": 4, \"h\": 4}]}");
+    fs::create_directories(d.path / "t");
+    fs::copy_file(fs::path(SPT_SOURCE_DIR) / "tests/hostile/inputs/good.png", d.path / "t" / "a.png");
+    const std::vector<std::vector<std::string>> styles = {
+        {"--sets", "4", "--target-psnr", "30", "--roi", "0,0,4,4", "--roi-file", d.file("roi.json"), "--stored",
+         "--target-bytes", "5000", "--fps", "25", "--skip-bad-frames", "--flow-orientation", "--color-encoding",
+         "linear", "--alpha", "on", "--colorspace", "sRGB", "--ocio", write_studio_ocio(d.file("studio.ocio")),
+         "--templates", d.file("t"), "--layer", "foo"},
+        {"--style", "cartoon", "--outline-tolerance", "0.7", "--outline-smooth", "1", "--min-region", "5",
+         "--min-color-share", "0.01", "--no-lines"},
+    };
+    for (const auto& opts : styles) {
+        std::vector<std::string> args = {"plan", seq, "-o", d.file("p.json")};
+        args.insert(args.end(), opts.begin(), opts.end());
+        auto r = run_spt(d, args);
+        ASSERT_EQ(r.code, 0) << opts[0] << ": " << r.err;
+        r = run_spt(d, {"farm", "status", d.file("p.json")});
+        EXPECT_TRUE(failed_with(r, 1, {"not submitted to a farm"})) << opts[0];
+    }
 }

@@ -34,6 +34,8 @@ const char* orient(paint::OrientMode m) {
 
 }  // namespace
 
+// Every option written here must be in plan/plan_args.cpp's list, or plans that carry it are
+// refused when read.
 std::vector<std::string> paint_args(const PaintCommandOptions& o) {
     std::vector<std::string> a;
     auto opt = [&](const char* name, const std::string& v) { a.push_back(name); a.push_back(v); };

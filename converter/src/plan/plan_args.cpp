@@ -10,12 +10,11 @@ namespace {
 // The options `spt plan` writes (converter/src/cli/paint_args.cpp): they shape the painting and
 // read files at most (--templates, --roi-file, --ocio); none names a file to write.
 constexpr const char* kWithValue[] = {
-    "alpha",       "background",        "color-encoding", "color-step",      "coding",        "colorspace",
-    "cut-threshold", "flow",            "fps",            "keyframe-interval", "lambda",      "layer",
-    "max-inter-strokes", "max-strokes", "min-color-share", "min-region",     "motion-block",  "ocio",
-    "orient",      "outline-smooth",    "outline-tolerance", "roi",          "roi-file",      "set-sizes",
-    "sets",        "style",             "target-bytes",   "target-psnr",     "temperature",   "templates",
-    "threshold",
+    "alpha", "background", "color-encoding", "color-step", "coding", "colorspace", "cut-threshold",
+    "flow", "fps", "keyframe-interval", "lambda", "layer", "max-inter-strokes", "max-strokes",
+    "min-color-share", "min-region", "motion-block", "ocio", "orient", "outline-smooth",
+    "outline-tolerance", "roi", "roi-file", "set-sizes", "sets", "style", "target-bytes",
+    "target-psnr", "temperature", "templates", "threshold",
 };
 constexpr const char* kFlags[] = {"flow-orientation", "no-lines", "skip-bad-frames", "stored"};
 
