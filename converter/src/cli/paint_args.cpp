@@ -23,14 +23,6 @@ std::string absolute(const std::string& p) {
     return ec ? p : a.lexically_normal().string();
 }
 
-const char* orient(paint::OrientMode m) {
-    switch (m) {
-        case paint::OrientMode::Edges: return "edges";
-        case paint::OrientMode::Gradient: return "gradient";
-        case paint::OrientMode::Random: return "random";
-    }
-    return "edges";
-}
 
 }  // namespace
 
@@ -62,7 +54,7 @@ std::vector<std::string> paint_args(const PaintCommandOptions& o) {
     opt("--lambda", exact(o.paint.lambda));
     opt("--temperature", exact(o.paint.temperature));
     opt("--color-step", std::to_string(o.paint.color_step));
-    opt("--orient", orient(o.paint.orient));
+    opt("--orient", job::orient_name(o.paint.orient));
     if (!o.templates_dir.empty()) opt("--templates", absolute(o.templates_dir));
     for (size_t i = 0; i < o.cli_roi_count && i < o.rois.size(); ++i) {
         const paint::Rect& r = o.rois[i].rect;

@@ -18,6 +18,13 @@ namespace {
 
 int fail(const std::string& msg) { return command_failed("paint", msg); }
 
+void warn_frames_short(uint64_t frames_short, uint64_t frames, double target, double lowest, uint32_t at, const char* why) {
+    if (frames_short == 0) return;
+    std::fprintf(stderr, "spt paint: warning: %llu of %llu frames short of --target-psnr %.2f (lowest %.2f dB, frame %u "
+                         "of the file)%s\n",
+                 (unsigned long long)frames_short, (unsigned long long)frames, target, lowest, at, why);
+}
+
 int report_cartoon_still(const PaintCommandOptions& o) {
     auto r = job::paint_cartoon_still(o);
     if (!r) return fail(r.error().message);
@@ -68,11 +75,7 @@ int report_cartoon_sequence(const PaintCommandOptions& o, const Metadata& extra,
                              "(%llu against the cartoon's %llu): %s holds its painting, %llu frames, PSNR mean %.2f dB\n",
                      o.input.c_str(), out.target_psnr, (unsigned long long)d.bytes, (unsigned long long)out.cartoon_bytes,
                      o.output.c_str(), (unsigned long long)d.frames, d.mean_psnr);
-        if (d.frames_short > 0)
-            std::fprintf(stderr, "spt paint: warning: %llu of %llu frames short of --target-psnr %.2f (lowest %.2f dB, frame %u "
-                                 "of the file)\n",
-                         (unsigned long long)d.frames_short, (unsigned long long)d.frames, out.target_psnr, d.min_psnr,
-                         d.min_psnr_frame);
+        warn_frames_short(d.frames_short, d.frames, out.target_psnr, d.min_psnr, d.min_psnr_frame, "");
         return 0;
     }
     if (o.progress != io::ProgressMode::None)
@@ -84,11 +87,8 @@ int report_cartoon_sequence(const PaintCommandOptions& o, const Metadata& extra,
                      (unsigned long long)r.polygons_added, (unsigned long long)r.polygons_kept,
                      (unsigned long long)r.stamps_added, (unsigned long long)r.removed, r.mean_psnr, r.min_psnr,
                      (unsigned long long)r.bytes, r.seconds, r.frames ? r.seconds / double(r.frames) : 0.0);
-    if (r.frames_short > 0)
-        std::fprintf(stderr, "spt paint: warning: %llu of %llu frames short of --target-psnr %.2f (lowest %.2f dB, frame %u "
-                             "of the file): the residual stamps stopped improving them\n",
-                     (unsigned long long)r.frames_short, (unsigned long long)r.frames, out.target_psnr, r.min_psnr,
-                     r.min_psnr_frame);
+    warn_frames_short(r.frames_short, r.frames, out.target_psnr, r.min_psnr, r.min_psnr_frame,
+                      ": the residual stamps stopped improving them");
     return 0;
 }
 

@@ -9,8 +9,6 @@
 
 namespace spt::job {
 
-namespace {
-
 const char* orient_name(paint::OrientMode m) {
     switch (m) {
         case paint::OrientMode::Edges: return "edges";
@@ -19,8 +17,6 @@ const char* orient_name(paint::OrientMode m) {
     }
     return "?";
 }
-
-}  // namespace
 
 std::string PaintJob::canonical() const {
     std::ostringstream s;

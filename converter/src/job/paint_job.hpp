@@ -75,6 +75,9 @@ struct PaintJob {
     std::string canonical() const;
 };
 
+// The --orient value's name ("edges", "gradient", "random").
+const char* orient_name(paint::OrientMode m);
+
 // A still painting's metadata: software, source (the input's file name), painter.seed and
 // painter.options (PaintJob::canonical), printable.
 std::vector<std::pair<std::string, std::string>> painting_metadata(const PaintJob& o);
