@@ -206,7 +206,7 @@ def bench_entry(args, name, kind, path):
     shares = changed_shares(frames, args.target)
     row = {"name": name, "kind": kind, "size": f"{w}x{h}", "frames": n,
            "p_mean": statistics.mean(shares) if shares else 0.0}
-    for style in ("painterly", "cartoon"):
+    for style in args.styles.split(","):
         b = f"{base}-{style}"
         extra = ["--seed", "1", "--target-psnr", str(args.target), "--style", style]
         size, rendered, secs = spt_paint(args.spt, src, b, extra, args.threads, n)
@@ -215,7 +215,8 @@ def bench_entry(args, name, kind, path):
         row[style] = {"bytes": size, "psnr": psnr, "seconds": secs * n, "inter_worst": worst, "inter_over": over,
                       "inter_bytes": inter, "key_bytes": keys}
     if not args.no_x265:
-        xb, xp, crf = x265_at(args.spt, path, kind, src, w, h, base + "-x265", args.threads, row["painterly"]["psnr"])
+        psnr = row["painterly"]["psnr"] if "painterly" in row else args.target
+        xb, xp, crf = x265_at(args.spt, path, kind, src, w, h, base + "-x265", args.threads, psnr)
         row["x265"] = {"bytes": xb, "psnr": xp, "crf": crf}
     return row
 
@@ -227,17 +228,20 @@ def print_table(rows, target):
            f"{'cartoon':>9} {'dB':>6} {'s':>6} {'inter':>6} {'over':>4} | {'c/d':>5} | {'x265':>8} {'d/x':>6} {'c/x':>6}")
     print(hdr)
     print("-" * len(hdr))
+    none = {"bytes": 0, "psnr": 0.0, "seconds": 0.0, "inter_worst": 0.0, "inter_over": 0}
     for r in rows:
-        d, c, x = r["painterly"], r["cartoon"], r.get("x265")
+        d, c, x = r.get("painterly", none), r.get("cartoon", none), r.get("x265")
         xs = f"{x['bytes']:>8} {d['bytes'] / x['bytes']:>6.2f} {c['bytes'] / x['bytes']:>6.2f}" if x else f"{'-':>8} {'-':>6} {'-':>6}"
         print(f"{r['name']:26} {r['size']:>9} {r['frames']:>3} {100 * r['p_mean']:>5.1f}% | "
               f"{d['bytes']:>9} {d['psnr']:>6.2f} {d['seconds']:>6.1f} {d['inter_worst']:>6.2f} {d['inter_over']:>4} | "
               f"{c['bytes']:>9} {c['psnr']:>6.2f} {c['seconds']:>6.1f} {c['inter_worst']:>6.2f} {c['inter_over']:>4} | "
-              f"{c['bytes'] / d['bytes']:>5.2f} | {xs}")
-    larger = [r["name"] for r in rows if r["cartoon"]["bytes"] > r["painterly"]["bytes"]]
-    over = [r["name"] for r in rows if r["painterly"]["inter_over"] or r["cartoon"]["inter_over"]]
+              f"{(c['bytes'] / d['bytes']) if d['bytes'] else 0:>5.2f} | {xs}")
+    larger = [r["name"] for r in rows if "cartoon" in r and "painterly" in r
+              and r["cartoon"]["bytes"] > r["painterly"]["bytes"]]
+    over = [r["name"] for r in rows if any(r.get(k, none)["inter_over"] for k in ("painterly", "cartoon"))]
     xr = [r for r in rows if "x265" in r]
-    med = lambda k: statistics.median(r[k]["bytes"] / r["x265"]["bytes"] for r in xr) if xr else float("nan")  # noqa: E731
+    med = lambda k: (statistics.median(r[k]["bytes"] / r["x265"]["bytes"] for r in xr if k in r)  # noqa: E731
+                     if any(k in r for r in xr) else float("nan"))
     print(f"summary: {len(rows)} entries; cartoon larger than default: {len(larger)} ({', '.join(larger) or 'none'}); "
           f"an inter frame over 2x what changed: {len(over)} ({', '.join(over) or 'none'}); "
           f"median bytes against x265: default {med('painterly'):.2f}, cartoon {med('cartoon'):.2f}")
@@ -257,6 +261,7 @@ def main():
     ap.add_argument("--out", default="/tmp/spt-corpus-bench")
     ap.add_argument("--only", default="")
     ap.add_argument("--no-x265", action="store_true")
+    ap.add_argument("--styles", default="painterly,cartoon", help="painterly,cartoon or one of them")
     ap.add_argument("--json", default="")
     args = ap.parse_args()
     rows = []
