@@ -1,6 +1,8 @@
 // The player's side of the Reader: the live stroke list of a frame, kept between calls so that
 // reading frame after frame is incremental, and render_frame, with its path for key frames of
 // stamps in coding 0 (rendered from their records without a Stroke list).
+#include <cstring>
+
 #include "reader_impl.hpp"
 #include "stamp_frame.hpp"
 
@@ -33,16 +35,78 @@ bool ReaderImpl::render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads
     return detail::render_stamp_frame(*renderer_, canvas, stamps, threads, opts_.limits.max_fill_work);
 }
 
+namespace {
+
+// A checksum of a canvas's bytes (64-bit multiply-xor over 8-byte words): tells whether the
+// caller changed the canvas since render_frame drew it. Cheap beside a render (one pass).
+uint64_t canvas_sum(const Canvas& c) {
+    uint64_t h = 0x9E3779B97F4A7C15ull ^ (uint64_t(c.width) << 32 | c.height);
+    auto mix = [&h](const void* data, size_t n) {
+        const auto* p = static_cast<const uint8_t*>(data);
+        size_t i = 0;
+        for (; i + 8 <= n; i += 8) {
+            uint64_t w;
+            std::memcpy(&w, p + i, 8);
+            h = (h ^ w) * 0xFF51AFD7ED558CCDull;
+            h ^= h >> 32;
+        }
+        uint64_t w = n;
+        for (; i < n; ++i) w = w << 8 | p[i];
+        h = (h ^ w) * 0xC4CEB9FE1A85EC53ull;
+        h ^= h >> 29;
+    };
+    mix(c.rgb.data(), c.rgb.size());
+    mix(c.rgb16.data(), c.rgb16.size() * 2);
+    mix(c.alpha.data(), c.alpha.size());
+    return h;
+}
+
+}  // namespace
+
+bool ReaderImpl::canvas_intact(const Canvas& canvas) const {
+    return shown_canvas_ == &canvas && shown_sum_ == canvas_sum(canvas);
+}
+
+void ReaderImpl::shown(size_t pos, size_t change, const Canvas& canvas) {
+    shown_pos_ = pos;
+    shown_change_ = change;
+    shown_canvas_ = &canvas;
+    shown_sum_ = canvas_sum(canvas);
+}
+
 Status ReaderImpl::render_frame(size_t pos, Canvas& canvas, unsigned threads) {
     if (pos >= frames_.size())
         return make_error(Code::InvalidArgument, "frame " + std::to_string(pos) + " does not exist (" +
                                                      std::to_string(frames_.size()) + " frames)");
-    if (render_stamp_frame(pos, canvas, threads)) return {};
+    // The same frame again, or a key frame whose still frames were drawn last: the canvas holds
+    // its picture already.
+    const bool key = frames_[pos].type == FrameType::Key;
+    const bool intact = canvas_intact(canvas);
+    if ((pos == shown_pos_ || (key && shown_change_ == pos)) && intact) {
+        shown_pos_ = pos;
+        return {};
+    }
+    // From here the canvas holds no known frame until a render ends (the record path draws
+    // nothing when it declines, and strokes_at does not touch the canvas).
+    shown_canvas_ = nullptr;
+    if (render_stamp_frame(pos, canvas, threads)) {
+        shown(pos, pos, canvas);  // a key frame is its own change frame
+        return {};
+    }
     auto live = strokes_at(pos);
     if (!live) return live.error();
+    // A frame that left the live list as it was (an empty inter frame, or none since the frame
+    // drawn last) has the picture that is on the canvas: rendering it again gives the same bytes.
+    if (live_change_ == shown_change_ && shown_change_ != SIZE_MAX && intact) {
+        shown_pos_ = pos;
+        shown_canvas_ = &canvas;
+        return {};
+    }
     const FrameEntry& e = frames_[pos];
     SPT_TRY(ensure_renderer(frame_where(e.index, e.offset), e.offset));
-    return renderer_->render(canvas, **live, threads);
+    SPT_TRY(renderer_->render(canvas, **live, threads));
+    shown(pos, live_change_, canvas);
+    return {};
 }
 
 Result<const std::vector<Stroke>*> ReaderImpl::strokes_at(size_t pos) {
@@ -56,13 +120,19 @@ Result<const std::vector<Stroke>*> ReaderImpl::strokes_at(size_t pos) {
     else live_pos_ = SIZE_MAX;
     for (size_t i = start; i <= pos; ++i) {
         // Not re-entered: frame i's base (for coding 2) is the live list of frame i - 1.
-        if (auto st = decode(i, nullptr, scratch_frame_); !st) { live_pos_ = SIZE_MAX; live_.clear(); return st.error(); }
+        if (auto st = decode(i, nullptr, scratch_frame_); !st) {
+            live_pos_ = live_change_ = SIZE_MAX;
+            live_.clear();
+            return st.error();
+        }
         if (auto st = apply_frame(live_, scratch_frame_, info_.header, opts_.limits, &info_.templates); !st) {
-            live_pos_ = SIZE_MAX;
+            live_pos_ = live_change_ = SIZE_MAX;
             live_.clear();
             const auto& e = frames_[i];
             return make_error(st.error().code, frame_where(e.index, e.offset) + ": " + st.error().message, e.offset);
         }
+        const Frame& f = scratch_frame_;
+        if (f.type == FrameType::Key || !f.removed.empty() || !f.motion.empty() || !f.added.empty()) live_change_ = i;
         live_pos_ = i;
     }
     return &live_;

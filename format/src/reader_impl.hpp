@@ -84,6 +84,9 @@ private:
     // render_frame's fast path: true when frame `pos` is a sound key frame of stamp records in
     // coding 0 and has been rendered from them; false (nothing reported) otherwise.
     bool render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads);
+    // True when `canvas` is the one render_frame last drew into and still holds those bytes.
+    bool canvas_intact(const Canvas& canvas) const;
+    void shown(size_t pos, size_t change, const Canvas& canvas);
     // Decodes frame `pos` into f, reusing f's memory (and the reader's chunk buffer).
     Status decode(size_t pos, FieldStats* stats, Frame& f);
     void warn(Error e) { warnings_.push_back(std::move(e)); }
@@ -100,6 +103,16 @@ private:
     // strokes_at cache
     std::vector<Stroke> live_;
     size_t live_pos_ = SIZE_MAX;
+    // The last frame at or before live_pos_ that changed the live list (its key frame, or an
+    // inter frame with a removal, motion or an added stroke): frames with the same one have
+    // the same live list, hence the same picture.
+    size_t live_change_ = SIZE_MAX;
+    // What render_frame last drew: the frame, its change frame (as live_change_), the canvas
+    // and a checksum of its bytes, so that a frame whose live list is unchanged reuses the
+    // picture instead of rendering it again (still stretches cost no rendering).
+    size_t shown_pos_ = SIZE_MAX, shown_change_ = SIZE_MAX;
+    const Canvas* shown_canvas_ = nullptr;
+    uint64_t shown_sum_ = 0;
     std::unique_ptr<Renderer> renderer_;  // coding 2 frames render while they decode
     // A frame chunk's payload buffer kept between decodes, so that reading frame after frame
     // does not allocate (and fault in) a fresh buffer each time. decode() borrows it (a nested

@@ -55,13 +55,12 @@ int cmd_verify(int argc, char** argv) {
         return bad(path, "the header says " + std::to_string(h.frame_count) + " frames, the file holds " +
                              std::to_string(frames.size()));
 
-    std::unique_ptr<Renderer> renderer;
+    const bool render = !args.has("no-render");
     Canvas canvas;
-    if (!args.has("no-render")) {
-        auto rc = Renderer::create(h, r.info().templates);
-        if (!rc) return bad(path, "header/templates cannot be rendered: " + rc.error().message);
-        renderer = std::move(*rc);
-        canvas = Canvas(h.width, h.height, h.background);
+    if (render) {
+        if (auto rc = Renderer::create(h, r.info().templates); !rc)
+            return bad(path, "header/templates cannot be rendered: " + rc.error().message);
+        canvas = Canvas(h);
     }
 
     io::Progress progress(mode, "verify", double(frames.size()));
@@ -74,8 +73,11 @@ int cmd_verify(int argc, char** argv) {
         auto live = r.strokes_at(i);
         if (!live) return bad(path, io::frame_error(r, i, path, live.error()));
         strokes += rec->added.size();
-        if (renderer) {
-            Status s = renderer->render(canvas, **live);
+        // The reader's player path: a frame that leaves the live list as it was keeps the
+        // picture drawn before it instead of rendering it again, and the reader bounds the
+        // rendering work of the whole file.
+        if (render) {
+            Status s = r.render_frame(i, canvas);
             if (!s) return bad(path, path + ": " + where + ": cannot render: " + s.error().message);
         }
         progress.update(double(i + 1));
@@ -83,7 +85,7 @@ int cmd_verify(int argc, char** argv) {
     progress.finish(true);
     if (!args.has("quiet"))
         std::printf("%s: OK, %zu frames, %llu strokes added, every checksum%s\n", path.c_str(), frames.size(),
-                    (unsigned long long)strokes, renderer ? ", decode and render sound" : " and decode sound");
+                    (unsigned long long)strokes, render ? ", decode and render sound" : " and decode sound");
     return 0;
 }
 

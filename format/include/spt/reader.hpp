@@ -61,6 +61,9 @@ public:
     // threads (0: one per hardware thread). A player's call: a key frame of stamps in coding 0
     // is rendered straight from its records, without building its stroke list; other frames go
     // through strokes_at (and move its incremental state). Errors are those strokes_at reports.
+    // A frame whose live list is the one last drawn (an inter frame with no removal, motion or
+    // added stroke, or the same frame again) is not rendered again when `canvas` is the canvas
+    // drawn last and still holds its bytes (a checksum says so): the bytes are the same.
     virtual Status render_frame(size_t frame_pos, Canvas& canvas, unsigned threads = 1) = 0;
     // Decodes one frame and reports where its body's bits go, per field.
     virtual Result<FieldStats> field_stats(size_t frame_pos) = 0;
