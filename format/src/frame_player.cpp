@@ -1,6 +1,7 @@
 // The player's side of the Reader: the live stroke list of a frame, kept between calls so that
 // reading frame after frame is incremental, and render_frame, with its path for key frames of
 // stamps in coding 0 (rendered from their records without a Stroke list).
+#include <algorithm>
 #include <cstring>
 
 #include "reader_impl.hpp"
@@ -31,8 +32,41 @@ bool ReaderImpl::render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads
     detail::StampSource stamps;
     if (!detail::stored_key_stamps(c.payload.data() + 8, c.length - 8, opts_.limits, stamps)) return false;
     if (!ensure_renderer("", 0)) return false;
-    // The renderer checks every stamp (ranges, footprint) and bounds the fill work of SPEC 10.
-    return detail::render_stamp_frame(*renderer_, canvas, stamps, threads, opts_.limits.max_fill_work);
+    // The renderer checks every stamp (ranges, footprint) and bounds the fill work of SPEC 10,
+    // per frame and what is left of the file's budget (over it, the general path reports it).
+    const uint64_t limit = std::min(opts_.limits.max_fill_work, fill_budget() - std::min(fill_budget(), fill_spent_));
+    uint64_t work = 0;
+    if (!detail::render_stamp_frame(*renderer_, canvas, stamps, threads, limit, &work)) return false;
+    fill_spent_ += work;  // the stamps' boxes unclipped: at least the work of SPEC 10
+    paid_[pos] = true;
+    return true;
+}
+
+uint64_t ReaderImpl::fill_budget() const {
+    // base + per_byte x size, saturating (both are caller-set).
+    const Limits& l = opts_.limits;
+    const uint64_t size = file_size();
+    if (l.max_fill_work_per_byte && size > (UINT64_MAX - l.max_file_fill_work) / l.max_fill_work_per_byte) return UINT64_MAX;
+    return l.max_file_fill_work + l.max_fill_work_per_byte * size;
+}
+
+Status ReaderImpl::pay_fill_work(size_t change, const std::vector<Stroke>& live) {
+    if (paid_[change]) return {};  // this live list was paid for when first drawn
+    uint64_t work = 0;
+    for (const Stroke& s : live) work += fill_render_work(s, info_.header, info_.templates);  // < 2^24 x 2^63 / 2^24
+    const uint64_t budget = fill_budget();
+    if (work > budget || fill_spent_ > budget - work) {
+        const FrameEntry& e = frames_[change];
+        return make_error(Code::LimitExceeded,
+                          frame_where(e.index, e.offset) + ": rendering it would take the file's stamps and affine strokes past " +
+                              std::to_string(budget) + " units of rendering work (box pixels x samples; " +
+                              std::to_string(fill_spent_) + " spent on the frames drawn before, " + std::to_string(work) +
+                              " for this one), the limit for a file of " + std::to_string(file_size()) + " bytes",
+                          e.offset);
+    }
+    fill_spent_ += work;
+    paid_[change] = true;
+    return {};
 }
 
 namespace {
@@ -104,6 +138,7 @@ Status ReaderImpl::render_frame(size_t pos, Canvas& canvas, unsigned threads) {
     }
     const FrameEntry& e = frames_[pos];
     SPT_TRY(ensure_renderer(frame_where(e.index, e.offset), e.offset));
+    SPT_TRY(pay_fill_work(live_change_, **live));
     SPT_TRY(renderer_->render(canvas, **live, threads));
     shown(pos, live_change_, canvas);
     return {};

@@ -274,6 +274,7 @@ Status ReaderImpl::open() {
         complete_ = false;
         SPT_TRY(scan_frames());
     }
+    paid_.assign(frames_.size(), false);  // render_frame's per-file fill budget
     return {};
 }
 

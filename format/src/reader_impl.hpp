@@ -87,6 +87,11 @@ private:
     // True when `canvas` is the one render_frame last drew into and still holds those bytes.
     bool canvas_intact(const Canvas& canvas) const;
     void shown(size_t pos, size_t change, const Canvas& canvas);
+    // The file's fill-work budget (Limits::max_file_fill_work + max_fill_work_per_byte per byte
+    // of the file), and its charge for drawing the live list of change frame `change`: each
+    // distinct live list is paid for once, however often it is drawn.
+    uint64_t fill_budget() const;
+    Status pay_fill_work(size_t change, const std::vector<Stroke>& live);
     // Decodes frame `pos` into f, reusing f's memory (and the reader's chunk buffer).
     Status decode(size_t pos, FieldStats* stats, Frame& f);
     void warn(Error e) { warnings_.push_back(std::move(e)); }
@@ -113,6 +118,9 @@ private:
     size_t shown_pos_ = SIZE_MAX, shown_change_ = SIZE_MAX;
     const Canvas* shown_canvas_ = nullptr;
     uint64_t shown_sum_ = 0;
+    // The fill work of the live lists drawn so far, and which change frames they were.
+    uint64_t fill_spent_ = 0;
+    std::vector<bool> paid_;
     std::unique_ptr<Renderer> renderer_;  // coding 2 frames render while they decode
     // A frame chunk's payload buffer kept between decodes, so that reading frame after frame
     // does not allocate (and fault in) a fresh buffer each time. decode() borrows it (a nested

@@ -41,7 +41,8 @@ public:
 
     // detail::render_stamp_frame (stamp_frame.hpp): a key frame of stamps binned straight from
     // their source, without a Stroke list.
-    bool render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads, uint64_t work_limit) const;
+    bool render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads, uint64_t work_limit,
+                       uint64_t* work_out = nullptr) const;
     // Alpha canvases and colour encoding 1 (render_deep.cpp): stroke by stroke, exact.
     Status draw_deep(Canvas& canvas, const Stroke& s) const;
     Status draw_deep_rows(Canvas& canvas, const Stroke& s, int64_t ry0, int64_t ry1) const;  // rows [ry0, ry1) only

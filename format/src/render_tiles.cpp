@@ -391,7 +391,7 @@ Status RendererImpl::render(Canvas& canvas, const std::vector<Stroke>& strokes, 
 }
 
 bool RendererImpl::render_stamps(Canvas& canvas, const detail::StampSource& src, unsigned threads,
-                                 uint64_t work_limit) const {
+                                 uint64_t work_limit, uint64_t* work_out) const {
     if (!header_.plain_color()) return false;
     Bins& bins = scratch_bins();
     Binner binner(*this, bins, src.count);
@@ -433,6 +433,7 @@ bool RendererImpl::render_stamps(Canvas& canvas, const detail::StampSource& src,
         }
     }
     if (work > work_limit) return false;
+    if (work_out) *work_out = work;
     binner.finish();
     size_canvas(canvas, header_);
     draw_tiles(*this, canvas, bins, nullptr, threads);
@@ -442,9 +443,9 @@ bool RendererImpl::render_stamps(Canvas& canvas, const detail::StampSource& src,
 namespace detail {
 
 bool render_stamp_frame(const Renderer& renderer, Canvas& canvas, const StampSource& src, unsigned threads,
-                        uint64_t work_limit) {
+                        uint64_t work_limit, uint64_t* work) {
     // Renderer::create makes only RendererImpl.
-    return static_cast<const RendererImpl&>(renderer).render_stamps(canvas, src, threads, work_limit);
+    return static_cast<const RendererImpl&>(renderer).render_stamps(canvas, src, threads, work_limit, work);
 }
 
 }  // namespace detail

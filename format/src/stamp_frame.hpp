@@ -36,8 +36,9 @@ inline uint32_t packed_u32(const uint8_t* q) {
 // those stamps as Strokes (render_tiles.cpp). Returns false, having drawn nothing, when a stamp
 // is not valid (SPEC 8.7), has no cached footprint, or the frame's fill work may exceed
 // `work_limit` (SPEC 10); the caller then takes the general path, which reports what is wrong.
+// With `work`, a rendered frame's fill work is stored there (the reader's per-file budget).
 bool render_stamp_frame(const Renderer& renderer, Canvas& canvas, const StampSource& src, unsigned threads,
-                        uint64_t work_limit);
+                        uint64_t work_limit, uint64_t* work = nullptr);
 
 // The stamps of a coding-0 key frame body (SPEC 6; stored_frame.cpp): true, with `out` set,
 // when the body is a stroke count within `limits` followed by that many 16-byte records (fill

@@ -185,3 +185,66 @@ TEST(RenderWorkLimits, PolygonLimitsAndRanges) {
     EXPECT_NE(f.error().message.find("outside +-2^24"), std::string::npos) << f.error().message;
     std::remove(path.c_str());
 }
+
+// The file's fill budget (Limits::max_file_fill_work + max_fill_work_per_byte per byte): the
+// live lists render_frame draws are counted, each once; still frames draw nothing and cost
+// nothing; the frame that would pass the budget is refused before it is drawn, named.
+TEST(RenderWorkLimits, FillWorkIsBoundedPerFile) {
+    AffineStroke a;
+    a.a = 16 * 100; a.d = 16 * 100; a.color = {1, 2, 3, 128};  // the whole 64 x 48 canvas: 3072
+    RandomStream rs = one_frame_stream(64, 48, std::vector<Stroke>(10, Stroke::make_affine(a)));
+    rs.info.templates.resize(1);
+    rs.info.templates[0].kind = TemplateKind::Ellipse;
+    for (uint32_t i = 1; i <= 6; ++i) {
+        Frame f;
+        f.index = i;
+        f.type = FrameType::Inter;
+        if (i == 4) f.added = {Stroke::make_affine(a)};  // 11 strokes from here: 33792
+        rs.frames.push_back(f);
+    }
+    const std::string path = temp_path("file-fill-work.spt");
+    ASSERT_TRUE(write_stream(path, rs, Coding::Range).ok());
+    const uint64_t key = 64 * 48 * 10, later = 64 * 48 * 11;
+    const auto draw_all = [&](const Limits& limits, size_t* refused) {
+        ReaderOptions ro;
+        ro.limits = limits;
+        auto r = Reader::open(path, ro);
+        EXPECT_TRUE(r.ok());
+        Canvas c;
+        for (size_t i = 0; i < 7; ++i) {
+            const Status st = (*r)->render_frame(i, c);
+            if (st) continue;
+            *refused = i;
+            EXPECT_EQ(st.error().code, Code::LimitExceeded);
+            EXPECT_NE(st.error().message.find("frame 4 (FRAM chunk at byte offset"), std::string::npos) << st.error().message;
+            EXPECT_NE(st.error().message.find("rendering work"), std::string::npos) << st.error().message;
+            EXPECT_NE(st.error().message.find("the limit for a file of"), std::string::npos) << st.error().message;
+            // Frames already paid for still draw, on any canvas.
+            Canvas other;
+            EXPECT_TRUE((*r)->render_frame(2, other).ok());
+            return false;
+        }
+        return true;
+    };
+    Limits limits;
+    limits.max_fill_work_per_byte = 0;
+    size_t refused = 99;
+    limits.max_file_fill_work = key + later;
+    EXPECT_TRUE(draw_all(limits, &refused));
+    limits.max_file_fill_work = key + later - 1;
+    EXPECT_FALSE(draw_all(limits, &refused));
+    EXPECT_EQ(refused, 4u);
+    // The per-byte part: the same budget from the file's size.
+    const uint64_t size = std::filesystem::file_size(path);
+    limits.max_file_fill_work = 0;
+    limits.max_fill_work_per_byte = (key + later) / size + 1;
+    EXPECT_TRUE(draw_all(limits, &refused));
+    limits.max_fill_work_per_byte = (key + later) / size - 1;
+    if (limits.max_fill_work_per_byte * size >= key) {
+        EXPECT_FALSE(draw_all(limits, &refused));
+        EXPECT_EQ(refused, 4u);
+    }
+    // The default budget: far above a small file's needs.
+    EXPECT_TRUE(draw_all(Limits(), &refused));
+    std::remove(path.c_str());
+}

@@ -78,7 +78,7 @@ int cmd_verify(int argc, char** argv) {
         // rendering work of the whole file.
         if (render) {
             Status s = r.render_frame(i, canvas);
-            if (!s) return bad(path, path + ": " + where + ": cannot render: " + s.error().message);
+            if (!s) return bad(path, io::frame_error(r, i, path, s.error()));
         }
         progress.update(double(i + 1));
     }

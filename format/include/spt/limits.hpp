@@ -32,6 +32,15 @@ struct Limits {
     // fill_render_work in render.hpp): millions of canvas-sized strokes cost a few bytes each.
     // 2^36 is a few minutes of one core at worst; a 30,000-stroke 1280x720 painting needs ~2^28.
     uint64_t max_fill_work = 1ull << 36;
+    // The same summed over the frames Reader::render_frame draws from one file (each distinct
+    // live list once; a frame that leaves the list as it was is not drawn again): at most
+    // max_file_fill_work + max_fill_work_per_byte x the file's size in bytes (SPEC.md B.7).
+    // A per-frame bound alone lets 15 KB hold a frame of 20 s and every frame of a file cost
+    // that; bounding work by the bytes that ask for it keeps it proportional to the file.
+    // 2^30 is about 3 s of one core; 2^18 per byte is 6x the densest painting measured (a
+    // 12-frame 480x270 video: 2^27 in 3.6 KB, 2^15.4 a byte; stills need at most 2^12.5).
+    uint64_t max_file_fill_work = 1ull << 30;
+    uint64_t max_fill_work_per_byte = 1ull << 18;
     uint32_t max_metadata_bytes = 1u << 24;
     uint32_t max_frames = 0xFFFFFFFEu;
 };
