@@ -1,0 +1,94 @@
+// Rendering work bounded per file (issue 36, item 4): a few KB of canvas-sized translucent
+// affine strokes in one key frame, then empty inter frames. Every empty frame was rendered
+// again from scratch (30 renders), and a frame near the per-frame fill limit could take
+// minutes. Now a still frame keeps the picture drawn before it, and a file whose frames
+// would need more fill work than its budget (SPEC.md B.7) is refused before it is drawn.
+#include <chrono>
+
+#include "converter/cli_test_util.hpp"
+#include "spt/spt.hpp"
+
+using namespace spt_test;
+
+namespace {
+
+// One key frame of `strokes` half-transparent affine ellipses covering a side x side canvas,
+// then 29 empty inter frames, range-coded (the issue's file: about 15 KB).
+std::string still_file(const TempDir& d, const std::string& name, uint32_t side, int strokes) {
+    spt::StreamInfo info;
+    info.header.width = info.header.height = side;
+    info.header.sets = {{4, 4}};
+    info.header.orientations = spt::default_orientations(1);
+    info.header.fps = {24, 1};
+    info.templates.resize(1);
+    info.templates[0].kind = spt::TemplateKind::Ellipse;
+    spt::WriterOptions o;
+    o.coding = spt::Coding::Range;
+    const std::string path = d.file(name);
+    auto w = spt::Writer::create(path, info, o);
+    EXPECT_TRUE(w.ok());
+    spt::Frame key;
+    for (int i = 0; i < strokes; ++i) {
+        spt::AffineStroke a;
+        a.tx = a.ty = int32_t(side * 8);  // the centre, Q4
+        a.a = a.d = int32_t(side * 8);    // reaching every edge
+        a.color = {uint8_t(i * 37), uint8_t(i * 11), 200, 128};
+        key.added.push_back(spt::Stroke::make_affine(a));
+    }
+    EXPECT_TRUE((*w)->append(key).ok());
+    for (uint32_t i = 1; i < 30; ++i) {
+        spt::Frame f;
+        f.index = i;
+        f.type = spt::FrameType::Inter;
+        EXPECT_TRUE((*w)->append(f).ok());
+    }
+    EXPECT_TRUE((*w)->finish().ok());
+    return path;
+}
+
+// run_spt, timed.
+RunResult timed(const TempDir& d, const std::vector<std::string>& args, double* seconds) {
+    const auto t0 = std::chrono::steady_clock::now();
+    RunResult r = run_spt(d, args);
+    *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("spt %s: %.2f s\n", args[0].c_str(), *seconds);
+    return r;
+}
+
+}  // namespace
+
+// 8,000 strokes on 256x256 (2^29 units, within the file's budget): one render, not 30.
+TEST(HostileRenderWork, StillFramesAfterAHeavyKeyFrameAreNotRenderedAgain) {
+    REQUIRE_TOOL();
+    TempDir d;
+    const std::string in = still_file(d, "still.spt", 256, 8000);
+    double s = 0;
+    auto r = timed(d, {"verify", in}, &s);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("OK, 30 frames"), std::string::npos) << r.out;
+    EXPECT_LT(s, 20.0) << "spt verify renders every still frame again";
+    r = timed(d, {"render", in, "-o", d.file("f####.png")}, &s);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_LT(s, 20.0) << "spt render renders every still frame again";
+    ASSERT_TRUE(fs::exists(d.file("f0029.png")));
+    EXPECT_EQ(slurp(d.file("f0000.png")), slurp(d.file("f0029.png")));
+}
+
+// The issue's scale: 8,000 strokes on 1024x1024 (2^33 units, 18.6 s a frame there) in about
+// 20 KB, over the file's budget (2^30 + 2^18 a byte): refused before anything is drawn,
+// naming the file and the frame; render writes nothing.
+TEST(HostileRenderWork, AFileOverItsFillBudgetIsRefusedBeforeItIsDrawn) {
+    REQUIRE_TOOL();
+    TempDir d;
+    const std::string in = still_file(d, "heavy.spt", 1024, 8000);
+    const std::string said = in + ": frame 0 (FRAM chunk at byte offset ";
+    const std::string why = "units of rendering work";
+    double s = 0;
+    auto r = timed(d, {"verify", in}, &s);
+    EXPECT_TRUE(failed_with(r, 1, {said, why, "the limit for a file of"}));
+    EXPECT_LT(s, 5.0);
+    r = timed(d, {"render", in, "-o", d.file("f####.png")}, &s);
+    EXPECT_TRUE(failed_with(r, 1, {said, why, "wrote 0 of 30 frames"}));
+    EXPECT_LT(s, 5.0);
+    EXPECT_FALSE(fs::exists(d.file("f0000.png")));
+}
