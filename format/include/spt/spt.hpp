@@ -20,6 +20,11 @@
 //   spt/limits.hpp   Limits: what a Reader accepts before it allocates (hostile input)
 //   spt/result.hpp   Status, Result<T>, Error: every call that can fail says why
 //   spt/version.hpp  library and format versions
+//   spt/color.hpp    colour encoding 1 (scene-linear half floats): SPEC.md 8.6's conversions
+//   spt/utf8.hpp     UTF-8 validation for the text the format carries
+// Supported API as well, included on their own (tools, not every reader needs them):
+//   spt/concat.hpp       join .spt files without re-coding (SPEC.md 9.6; farm shots)
+//   spt/atomic_file.hpp  outputs that appear only when complete and follow no symlink
 //
 // Errors are values: a Result<T> is either a T or an Error (code, message naming the file,
 // frame and byte offset); nothing throws on bad input. A Reader checks every count against
