@@ -22,6 +22,19 @@ bool ends_with(std::string s, const std::string& suffix) {
 
 int fail(const std::string& msg) { return command_failed("export", msg); }
 
+// The frames at `positions` checked as spt verify checks them, before anything is written: an
+// export of a file that verify and render refuse would carry fewer frames, or frames that do
+// not import again, with exit 0. Damage that costs nothing asked for is said on stderr.
+bool frames_sound(Reader& r, const std::string& in, const std::vector<size_t>& positions, bool lost_matter, int& rc) {
+    std::vector<std::string> warnings;
+    if (Status s = io::check_frames(r, in, positions, lost_matter, warnings); !s) {
+        rc = fail(s.error().message);
+        return false;
+    }
+    for (const auto& w : warnings) std::fprintf(stderr, "spt export: warning: %s\n", w.c_str());
+    return true;
+}
+
 }  // namespace
 
 int cmd_export(int argc, char** argv) {
@@ -37,7 +50,9 @@ int cmd_export(int argc, char** argv) {
                              "stamps that add its last decibels (their count is said on stderr)")
         .flag("web", "write DIR/ for a web server: the player (web/README.md), its WebAssembly module, the clip and "
                      "index.html (OUT.html instead: one self-contained page that plays offline)")
-        .epilog("The JSON output imports back (spt import) into the same .spt file. In the SVG, each stamp or\n"
+        .epilog("The file is checked first as spt verify checks the frames it exports (each decoded and\n"
+                "applied, within the limits); a bad or lost frame fails the export and nothing is written.\n"
+                "The JSON output imports back (spt import) into the same .spt file. In the SVG, each stamp or\n"
                 "affine stroke is its template (ellipse/rect/polygon, or a bitmap as a PNG mask) placed with\n"
                 "transform=\"matrix(...)\"; curves are round-capped outlines; polygon strokes are <polygon>s\n"
                 "(nonzero fill); the result renders in a browser\n"
@@ -72,6 +87,9 @@ int cmd_export(int argc, char** argv) {
     const size_t n = r.frames().size();
 
     if (json) {
+        std::vector<size_t> every(n);
+        for (size_t i = 0; i < n; ++i) every[i] = i;
+        if (int rc = 0; !frames_sound(r, in, every, true, rc)) return rc;
         import::Document doc;
         doc.info = r.info();
         for (size_t i = 0; i < n; ++i) {
@@ -99,10 +117,14 @@ int cmd_export(int argc, char** argv) {
     std::vector<size_t> picked;
     for (size_t i = 0; i < n; ++i)
         if (range.empty() || range.contains(long(i))) picked.push_back(i);
-    if (picked.empty()) return fail(in + ": no frame in the requested range (the file has " + std::to_string(n) + ")");
     const bool pattern = io::is_sequence_pattern(out);
     if (picked.size() > 1 && !pattern)
         return args.usage_error(std::to_string(picked.size()) + " frames need a frame number placeholder in the output name (OUT.####.svg), or --frames N");
+    // Lost frames matter when every frame is asked for, or one past the last found.
+    bool past_end = range.empty();
+    for (const auto& span : range.spans) past_end = past_end || span.second >= long(n);
+    if (int rc = 0; !frames_sound(r, in, picked, past_end, rc)) return rc;
+    if (picked.empty()) return fail(in + ": no frame in the requested range (the file has " + std::to_string(n) + ")");
     uint64_t left_out = 0;
     for (size_t i : picked) {
         auto live = r.strokes_at(i);

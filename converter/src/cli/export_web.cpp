@@ -117,15 +117,18 @@ bool is_web_export(const std::string& out, bool web_flag) {
 }
 
 int export_web(const std::string& in, const std::string& out, bool folder) {
-    if (web::player_assets().empty())
-        return fail("this spt was built without the web player (configure with -DSPT_BUILD_WEB=ON; needs emcc, "
-                    "Debian package emscripten)");
+    // The file first (what spt verify checks: the page plays every frame), then the player.
     auto reader = io::open_spt(in);
     if (!reader) return fail(reader.error().message);
     Reader& r = **reader;
-    for (size_t i = 0; i < r.frames().size(); ++i)
-        if (auto live = r.strokes_at(i); !live) return fail(io::frame_error(r, i, in, live.error()));
-    if (r.frames().empty()) return fail(in + ": the file holds no complete frame");
+    std::vector<size_t> every(r.frames().size());
+    for (size_t i = 0; i < every.size(); ++i) every[i] = i;
+    std::vector<std::string> warnings;
+    if (Status s = io::check_frames(r, in, every, true, warnings); !s) return fail(s.error().message);
+    for (const auto& w : warnings) std::fprintf(stderr, "spt export: warning: %s\n", w.c_str());
+    if (web::player_assets().empty())
+        return fail("this spt was built without the web player (configure with -DSPT_BUILD_WEB=ON; needs emcc, "
+                    "Debian package emscripten)");
 
     std::string clip;
     {

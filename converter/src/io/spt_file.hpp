@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "spt/reader.hpp"
 #include "spt/result.hpp"
@@ -22,5 +23,14 @@ std::string frame_place(const Reader& r, size_t pos);
 // An error met while decoding frame `pos`: described, and placed with frame_place() unless the
 // library's message already names the frame.
 std::string frame_error(const Reader& r, size_t pos, const std::string& path, const Error& e);
+
+// What spt verify checks of the frames a command reads whole (spt export), through the reader's
+// own path: the header and templates make a renderer; every frame at `positions` is decoded and
+// applied by strokes_at (removals and motion in range, the live list within the limits and the
+// rendering work of SPEC.md 10); a file with no frame fails. Frames lost to damage (a skipped
+// index, a cut) fail it when `lost_matter` (the command wants every frame, or some past the
+// last one found); damage that costs nothing asked for is added to `warnings`, described.
+Status check_frames(Reader& r, const std::string& path, const std::vector<size_t>& positions, bool lost_matter,
+                    std::vector<std::string>& warnings);
 
 }  // namespace spt::io
