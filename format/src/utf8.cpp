@@ -45,7 +45,14 @@ std::string printable_text(std::string_view s) {
     for (size_t i = 0; i < s.size();) {
         const size_t n = sequence_length(s, i);
         const uint8_t c = uint8_t(s[i]);
-        if (n > 1 || (n == 1 && c >= 0x20 && c != 0x7F)) {
+        // C1 controls (U+0080..U+009F) are valid UTF-8, but a terminal may act on them as it
+        // does on ESC: U+009B starts a control sequence.
+        if (n == 2 && c == 0xC2 && uint8_t(s[i + 1]) <= 0x9F) {
+            out += "\\u00";
+            out += hex[uint8_t(s[i + 1]) >> 4];
+            out += hex[uint8_t(s[i + 1]) & 15];
+            i += 2;
+        } else if (n > 1 || (n == 1 && c >= 0x20 && c != 0x7F)) {
             out.append(s.substr(i, n));
             i += n;
         } else {

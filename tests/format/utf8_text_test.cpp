@@ -30,6 +30,8 @@ TEST(Utf8, AcceptsWellFormedAndRejectsTheRest) {
     EXPECT_FALSE(is_valid_utf8("\xE2\x82"));          // truncated
     EXPECT_FALSE(is_valid_utf8("\x80"));              // lone continuation
     EXPECT_EQ(printable_text("a\xFF\xC3\xA9\n"), "a\\xff\xC3\xA9\\x0a");
+    // ESC, DEL and the C1 control U+009B (CSI) are made visible; U+00A0 is text.
+    EXPECT_EQ(printable_text("\x1b[2J\x7f\xC2\x9b" "2J\xC2\xA0"), "\\x1b[2J\\x7f\\u009b2J\xC2\xA0");
 }
 
 TEST(WriterText, RefusesMetadataThatIsNotUtf8NamingTheKey) {

@@ -249,7 +249,7 @@ int cmd_info(int argc, char** argv) {
     for (const auto& t : info.templates) {
         std::printf(" %s", template_kind_name(t.kind));
         if (t.kind == TemplateKind::Bitmap) std::printf(" %ux%u", t.width, t.height);
-        if (!t.name.empty()) std::printf(" \"%s\"", t.name.c_str());
+        if (!t.name.empty()) std::printf(" \"%s\"", printable_text(t.name).c_str());
         std::printf(";");
     }
     std::printf("\nstrokes     %llu added", (unsigned long long)added);
@@ -262,7 +262,9 @@ int cmd_info(int argc, char** argv) {
     std::printf(", %llu removed", (unsigned long long)removed);
     if (list) std::printf(", at most %llu live", (unsigned long long)max_live);
     std::printf("\n");
-    for (const auto& [k, v] : info.metadata) std::printf("meta        %s = %s\n", k.c_str(), v.c_str());
+    // Text from the file, never raw to the terminal: an ESC in it would be acted on.
+    for (const auto& [k, v] : info.metadata)
+        std::printf("meta        %s = %s\n", printable_text(k).c_str(), printable_text(v).c_str());
     for (const auto& q : info.rois)
         std::printf("roi         frames %u-%u: %u,%u %ux%u\n", q.first_frame, q.last_frame, q.x, q.y, q.w, q.h);
     std::printf("key frames ");

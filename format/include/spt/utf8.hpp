@@ -12,7 +12,9 @@ namespace spt {
 // U+10FFFF). Otherwise false, with the offset of the first byte of the bad sequence in *bad_at.
 bool is_valid_utf8(std::string_view s, size_t* bad_at = nullptr);
 
-// `s` for a message: printable ASCII and valid UTF-8 as they are, other bytes as \xNN.
+// `s` for a message or a terminal: printable ASCII and valid UTF-8 as they are, C1 controls
+// as \u0080..\u009f, other bytes (control characters, ESC, DEL, invalid UTF-8) as \xNN, so no
+// file-supplied text reaches a terminal as an escape sequence.
 std::string printable_text(std::string_view s);
 
 }  // namespace spt
