@@ -228,6 +228,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
     Canvas canvas(W, H, opts.background);
     double psnr_sum = 0;
     uint32_t index = 0, since_key = 0;
+    double key_cost = 0;  // the interval's key frame, estimated bytes (frame_cost)
     for (;;) {
         if (frame.repeated)  // --skip-bad-frames, as the video painter says it
             std::fprintf(stderr, "spt paint: warning: %s; repeating the previous frame\n", frame.problem.c_str());
@@ -246,6 +247,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             fo.min_region_pixels = k.fill.min_region;
             retrace = {};
             f = std::move(k.frame);
+            key_cost = frame_cost(f);
             canvas = std::move(k.canvas);
             rep.polygons_added += k.polygons;
             rep.stamps_added += k.stamps;
@@ -298,11 +300,20 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             // many frames of kept and added strokes built) is painted again as a key frame,
             // kept when it comes closer.
             const double target = opts.paint.target_psnr;
+            // So is one that costs more than twice its key frame (what the issue-34 budget
+            // allows when every pixel changed): a key frame painted now may be the cheaper, as
+            // when a fade leaves the interval's tiny key frame far behind. Kept when it reaches
+            // the target for fewer estimated bytes.
             std::optional<KeyFrame> fresh;
-            if (target > 0 && !r->unchanged && !paint::reaches_target(paint::psnr(model, r->canvas.rgb.data()), target)) {
+            const bool short_of_target =
+                target > 0 && !paint::reaches_target(paint::psnr(model, r->canvas.rgb.data()), target);
+            const bool dearer_than_keys = target > 0 && r->cost > 2 * key_cost + 64;
+            if (!r->unchanged && (short_of_target || dearer_than_keys)) {
                 auto chosen = choose_key(rgb, model, **renderer, setup, opts, index, parallel);
                 if (!chosen) return chosen.error();
-                if (paint::psnr(model, chosen->canvas.rgb.data()) > paint::psnr(model, r->canvas.rgb.data()))
+                const double pk = paint::psnr(model, chosen->canvas.rgb.data());
+                if (short_of_target ? pk > paint::psnr(model, r->canvas.rgb.data())
+                                    : paint::reaches_target(pk, target) && frame_cost(chosen->frame) < r->cost)
                     fresh = std::move(*chosen);
             }
             if (fresh) {
