@@ -4,6 +4,8 @@
 // renderer's tiles by stamp_frame.hpp's interface) or the general one.
 #include <gtest/gtest.h>
 
+#include "format/render_reference.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -21,14 +23,7 @@ const std::string kGolden = std::string(SPT_SOURCE_DIR) + "/tests/format/golden"
 
 // What render_frame must give: strokes_at on a reader of its own, then Renderer::render.
 std::vector<uint8_t> reference(const std::vector<uint8_t>& file, size_t pos, const ReaderOptions& o = {}) {
-    auto r = Reader::open_memory(file.data(), file.size(), o);
-    EXPECT_TRUE(r.ok());
-    auto live = (*r)->strokes_at(pos);
-    EXPECT_TRUE(live.ok()) << live.error().message;
-    auto rd = Renderer::create((*r)->info().header, (*r)->info().templates);
-    Canvas c;
-    EXPECT_TRUE((*rd)->render(c, **live).ok());
-    return c.rgb;
+    return spt_test::reference_render(file, pos, o);
 }
 
 std::string error_of_strokes_at(const std::vector<uint8_t>& file, size_t pos, const ReaderOptions& o) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "format/coding_random_streams.hpp"
+#include "format/render_reference.hpp"
 
 using namespace spt;
 using namespace spt::testing;
@@ -13,14 +14,7 @@ namespace {
 
 // The full render of frame `pos`: strokes_at on a fresh reader, then Renderer::render.
 std::vector<uint8_t> full_render(const std::vector<uint8_t>& file, size_t pos) {
-    auto r = Reader::open_memory(file.data(), file.size());
-    EXPECT_TRUE(r.ok());
-    auto live = (*r)->strokes_at(pos);
-    EXPECT_TRUE(live.ok()) << live.error().message;
-    auto rd = Renderer::create((*r)->info().header, (*r)->info().templates);
-    Canvas c;
-    EXPECT_TRUE((*rd)->render(c, **live).ok());
-    return c.rgb;
+    return spt_test::reference_render(file, pos);
 }
 
 Frame empty_inter(uint32_t index) {

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "converter/cli_test_util.hpp"
+#include "hostile/spawn_quiet.hpp"
 #include "io/image_io.hpp"
 
 using namespace spt_test;
@@ -41,17 +42,7 @@ size_t count(const std::string& s, const std::string& what) {
 
 // Starts spt, sends `sig` after `after`, waits; true when the signal ended it.
 bool run_and_signal(const std::vector<std::string>& args, int sig, std::chrono::milliseconds after, int* exit_code) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        const int devnull = ::open("/dev/null", O_WRONLY);
-        ::dup2(devnull, STDOUT_FILENO);
-        ::dup2(devnull, STDERR_FILENO);
-        std::vector<char*> argv{const_cast<char*>(SPT_TOOL)};
-        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        ::execv(SPT_TOOL, argv.data());
-        ::_exit(127);
-    }
+    const pid_t pid = spt_test::spawn_spt_quietly(args);
     std::this_thread::sleep_for(after);
     ::kill(pid, sig);
     int st = 0;

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include "converter/cli_test_util.hpp"
+#include "hostile/spawn_quiet.hpp"
 
 using namespace spt_test;
 
@@ -12,17 +13,7 @@ namespace {
 
 // Runs spt with `args` (output discarded); its exit code and peak resident size in MiB.
 std::pair<int, long> run_measured(const std::vector<std::string>& args) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        const int devnull = ::open("/dev/null", O_WRONLY);
-        ::dup2(devnull, STDOUT_FILENO);
-        ::dup2(devnull, STDERR_FILENO);
-        std::vector<char*> argv{const_cast<char*>(SPT_TOOL)};
-        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        ::execv(SPT_TOOL, argv.data());
-        ::_exit(127);
-    }
+    const pid_t pid = spt_test::spawn_spt_quietly(args);
     int st = 0;
     struct rusage ru {};
     ::wait4(pid, &st, 0, &ru);
