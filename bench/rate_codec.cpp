@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
                     (unsigned long long)(c2.bytes - c2.frame_bytes), secs);
         if (jxl) {
             const std::string png = stem + ".png", jx = stem + ".jxl";
-            io::write_image(png, canvas);
+            if (Status w = io::write_image(png, canvas); !w) { std::fprintf(stderr, "%s\n", w.error().message.c_str()); return 1; }
             const std::string cmd = "cjxl -d 0 -e 7 --quiet '" + png + "' '" + jx + "' >/dev/null 2>&1";
             if (std::system(cmd.c_str()) == 0) {
                 const auto jb = std::filesystem::file_size(jx);

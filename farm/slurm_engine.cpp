@@ -72,7 +72,8 @@ public:
         argv.push_back(join_script);
         Result<std::string> out = run_capture(argv);
         if (!out) {
-            if (!ids.tasks_id.empty()) run_capture({"scancel", ids.tasks_id});
+            // Best effort: the join failed to submit, and the tasks it would join are cancelled.
+            if (!ids.tasks_id.empty()) (void)run_capture({"scancel", ids.tasks_id});
             return out.error();
         }
         ids.join_id = trim(*out);

@@ -30,7 +30,7 @@ struct Error {
 
 // A minimal expected<T, Error>: C++20 has no std::expected.
 template <class T>
-class Result {
+class [[nodiscard]] Result {
 public:
     Result(T value) : value_(std::move(value)) {}
     Result(Error e) : error_(std::move(e)) {}
@@ -49,7 +49,7 @@ private:
     Error error_;
 };
 
-struct Status {
+struct [[nodiscard]] Status {
     Status() = default;
     Status(Error e) : error_(std::move(e)) {}
     bool ok() const { return error_.code == Code::Ok; }
