@@ -4,7 +4,10 @@
 // after a node failure; failures of the task itself are retried by the task's wrapper
 // (farm_job.cpp) inside its allocation, because a job requeued with `scontrol requeue` waits
 // behind a BeginTime delay (measured here: still pending after 15 s).
+#include <algorithm>
+#include <cstdlib>
 #include <sstream>
+#include <vector>
 
 #include "farm/engine.hpp"
 #include "farm/process.hpp"
@@ -25,6 +28,36 @@ Status write_text(const std::string& path, const std::string& text) {
     return write_file_atomic(path, text.data(), text.size());
 }
 
+// The shots as Slurm's array list, runs of consecutive numbers as ranges ("0-39999,40002"):
+// a list of every number passed the 128 KiB argument limit at 40,000 shots.
+std::string array_list(std::vector<uint64_t> shots) {
+    std::sort(shots.begin(), shots.end());
+    shots.erase(std::unique(shots.begin(), shots.end()), shots.end());
+    std::string list;
+    for (size_t i = 0; i < shots.size();) {
+        size_t j = i;
+        while (j + 1 < shots.size() && shots[j + 1] == shots[j] + 1) ++j;
+        list += (list.empty() ? "" : ",") + std::to_string(shots[i]);
+        if (j > i) list += "-" + std::to_string(shots[j]);
+        i = j + 1;
+    }
+    return list;
+}
+
+// The cluster's MaxArraySize (array indices must be below it), or 0 when scontrol cannot say.
+uint64_t max_array_size() {
+    Result<std::string> out = run_capture({"scontrol", "show", "config"});
+    if (!out) return 0;
+    std::istringstream in(*out);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("MaxArraySize", 0) != 0) continue;
+        const size_t eq = line.find('=');
+        if (eq == std::string::npos) return 0;
+        return std::strtoull(line.c_str() + eq + 1, nullptr, 10);
+    }
+    return 0;
+}
+
 class SlurmEngine final : public Engine {
 public:
     std::string name() const override { return "slurm"; }
@@ -42,11 +75,18 @@ public:
             s << "#!/bin/bash\n# spt farm: one shot per array task (array index = shot)\n"
                  "export SPT_FARM_THREADS=\"${SLURM_CPUS_PER_TASK:-}\"  # --cpus-per-task, when given\n"
                  "case \"$SLURM_ARRAY_TASK_ID\" in\n";
-            std::string list;
+            std::vector<uint64_t> shots;
             for (const Task& t : job.tasks) {
                 s << "  " << t.shot << ") exec " << shell_line(t.command) << " ;;\n";
-                list += (list.empty() ? "" : ",") + std::to_string(t.shot);
+                shots.push_back(t.shot);
             }
+            const uint64_t last = *std::max_element(shots.begin(), shots.end());
+            if (const uint64_t limit = max_array_size(); limit > 0 && last >= limit)
+                return make_error(Code::InvalidArgument,
+                                  "the plan's shot " + std::to_string(last) + " needs a Slurm array index below this " +
+                                      "cluster's MaxArraySize (" + std::to_string(limit) + "): raise MaxArraySize in " +
+                                      "slurm.conf, or plan fewer, longer shots (spt plan --max-task-frames)");
+            const std::string list = array_list(shots);
             s << "esac\necho \"spt farm: no shot $SLURM_ARRAY_TASK_ID in this job\" >&2\nexit 2\n";
             if (Status st = write_text(script, s.str()); !st) return st.error();
             std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + job.name, "--array=" + list,

@@ -112,3 +112,34 @@ TEST(HostileFarm, AHugeAttemptsMarkerIsRefusedNotRead) {
     const auto r = run_spt(d, {"farm", "status", plan});
     EXPECT_TRUE(failed_with(r, 1, {a, "the farm state file is 268435456 bytes, over the limit of 1 MiB"}));
 }
+
+// Issue 36 item 10: the array list named every shot (40,000 shots passed the 128 KiB argument
+// limit and sbatch could not start), and Slurm's MaxArraySize was a ceiling nobody was told of.
+TEST(HostileFarm, TheArrayListIsRangesAndMaxArraySizeIsNamedUpFront) {
+    TempDir d;
+    fake_slurm(d);
+    write_text(d.file("bin/sbatch"), "#!/bin/sh\necho \"$@\" >> \"$(dirname \"$0\")/sbatch.args\"\necho 4242\n");
+    write_text(d.file("bin/scontrol"), "#!/bin/sh\necho 'MaxArraySize            = 1001'\n");
+    for (const char* n : {"bin/sbatch", "bin/scontrol"})
+        fs::permissions(d.path / n, fs::perms::owner_all, fs::perm_options::add);
+    const std::string plan = d.file("p.json");
+    ASSERT_FALSE(tiny_plan(d, plan).empty());
+    auto r = run_spt(d, {"farm", "slurm", plan, "-o", d.file("out.spt")});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string args = slurp(d.file("bin/sbatch.args"));
+    EXPECT_NE(args.find("--array=0-1 "), std::string::npos) << args;
+
+    // A cluster whose arrays stop below the plan's last shot: refused before anything is queued.
+    TempDir e;
+    fake_slurm(e);
+    write_text(e.file("bin/sbatch"), "#!/bin/sh\necho \"$@\" >> \"$(dirname \"$0\")/sbatch.args\"\necho 4242\n");
+    write_text(e.file("bin/scontrol"), "#!/bin/sh\necho 'MaxArraySize            = 1'\n");
+    for (const char* n : {"bin/sbatch", "bin/scontrol"})
+        fs::permissions(e.path / n, fs::perms::owner_all, fs::perm_options::add);
+    const std::string plan2 = e.file("p.json");
+    ASSERT_FALSE(tiny_plan(e, plan2).empty());
+    auto refused = run_spt(e, {"farm", "slurm", plan2, "-o", e.file("out.spt")});
+    EXPECT_NE(refused.code, 0);
+    EXPECT_NE(refused.err.find("MaxArraySize (1)"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(e.file("bin/sbatch.args"))) << "nothing was submitted";
+}
