@@ -74,11 +74,10 @@ std::string task_script(const SubmitOptions& o, const std::string& state, const 
     return s.str();
 }
 
-std::string join_script(const SubmitOptions& o, const std::string& state, const plan::Plan& p,
-                        const std::string& output) {
-    std::vector<std::string> argv = {o.spt, "cat"};
-    for (size_t k = 0; k < p.shots.size(); ++k) argv.push_back(shot_file(state, k));
-    argv.insert(argv.end(), {"-o", output});
+std::string join_script(const SubmitOptions& o, const std::string& state, const std::string& output) {
+    // The shots come from a list file (shots.list, written beside it): a command line naming
+    // 40,000 of them passed the system's argument limit.
+    std::vector<std::string> argv = {o.spt, "cat", "--list", state + "/shots.list", "-o", output};
     return "#!/bin/bash\n# spt farm join: every shot, in order, into the output.\nset -e\n" + std::string(kPutMarker) +
            shell_line(argv) + "\nput " + shell_quote(run_dir(state) + "/join.done") + " ''\n";
 }
@@ -162,7 +161,10 @@ Result<SubmitReport> submit_plan(Engine& engine, const SubmitOptions& o) {
     }
     const std::string task = state + "/task.sh", join = state + "/join.sh";
     if (Status st = write_text(task, task_script(o, state, plan_abs)); !st) return st.error();
-    if (Status st = write_text(join, join_script(o, state, *p, output)); !st) return st.error();
+    if (Status st = write_text(join, join_script(o, state, output)); !st) return st.error();
+    std::string list;
+    for (size_t k = 0; k < p->shots.size(); ++k) list += shot_file(state, k) + "\n";
+    if (Status st = write_text(state + "/shots.list", list); !st) return st.error();
     FarmJob job;
     job.name = "spt-" + p->id.substr(0, 8);
     job.state_dir = state;

@@ -50,6 +50,25 @@ TEST(CatCli, JoinsAndTheResultVerifies) {
                         d.file("x.spt")));
 }
 
+// --list FILE: parts one a line after those on the command line (a farm's join of more shots
+// than a command line holds): the same bytes as naming them all.
+TEST(CatCli, AListFileGivesTheSamePartsAsTheCommandLine) {
+    REQUIRE_TOOL();
+    TempDir d;
+    write_test_spt(d.file("a.spt"), 12, 5, spt::Coding::Range, 1);
+    write_test_spt(d.file("b.spt"), 7, 3, spt::Coding::Range, 2);
+    write_text(d.file("parts.list"), d.file("b.spt") + "\n\n" + d.file("a.spt") + "\n");
+    ASSERT_EQ(run_spt(d, {"cat", d.file("a.spt"), d.file("b.spt"), d.file("a.spt"), "-o", d.file("named.spt")}).code, 0);
+    RunResult r = run_spt(d, {"cat", d.file("a.spt"), "--list", d.file("parts.list"), "-o", d.file("listed.spt")});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(slurp(d.file("listed.spt")), slurp(d.file("named.spt")));
+    // A missing list is named; a list with no parts and nothing else is a usage error.
+    EXPECT_TRUE(refused(d, {"cat", "--list", d.file("nope.list"), "-o", d.file("x.spt")}, 1, {"nope.list"},
+                        d.file("x.spt")));
+    write_text(d.file("empty.list"), "\n");
+    EXPECT_EQ(run_spt(d, {"cat", "--list", d.file("empty.list"), "-o", d.file("x.spt")}).code, 2);
+}
+
 TEST(CatCli, RefusesADifferentCanvasNamingTheFile) {
     REQUIRE_TOOL();
     TempDir d;

@@ -35,6 +35,12 @@ inline std::string shell_quote(const std::string& s) {
 
 using spt::testing::slurp;
 
+// Writes `text` to `path` as it is (test inputs: lists, plans, scripts).
+inline void write_text(const std::string& path, const std::string& text) {
+    std::ofstream f(path, std::ios::binary);
+    f << text;
+}
+
 // Runs SPT_TOOL with `args`; stdout and stderr are captured through files in `dir`.
 inline RunResult run_spt(const TempDir& dir, const std::vector<std::string>& args) {
     std::string cmd = shell_quote(SPT_TOOL);

@@ -51,9 +51,4 @@ inline std::string with_paint_args(const std::string& plan_text, const std::vect
     return resign(t);
 }
 
-inline void write_text(const std::string& path, const std::string& text) {
-    std::ofstream f(path, std::ios::binary);
-    f << text;
-}
-
 }  // namespace spt_test
