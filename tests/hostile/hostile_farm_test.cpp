@@ -22,6 +22,17 @@ void fake_slurm(const TempDir& d) {
     ::setenv("PATH", path.c_str(), 1);
 }
 
+// fake_slurm, with an sbatch that records its arguments in bin/sbatch.args and an scontrol
+// that reports `max_array_size`.
+void fake_slurm_recording(const TempDir& d, int max_array_size) {
+    fake_slurm(d);
+    write_text(d.file("bin/sbatch"), "#!/bin/sh\necho \"$@\" >> \"$(dirname \"$0\")/sbatch.args\"\necho 4242\n");
+    write_text(d.file("bin/scontrol"),
+               "#!/bin/sh\necho 'MaxArraySize            = " + std::to_string(max_array_size) + "'\n");
+    for (const char* n : {"bin/sbatch", "bin/scontrol"})
+        fs::permissions(d.path / n, fs::perms::owner_all, fs::perm_options::add);
+}
+
 int run_bash(const std::string& script, const std::string& arg = "") {
     const std::string cmd = "/bin/bash " + shell_quote(script) + (arg.empty() ? "" : " " + shell_quote(arg)) +
                             " >/dev/null 2>&1 </dev/null";
@@ -117,11 +128,7 @@ TEST(HostileFarm, AHugeAttemptsMarkerIsRefusedNotRead) {
 // limit and sbatch could not start), and Slurm's MaxArraySize was a ceiling nobody was told of.
 TEST(HostileFarm, TheArrayListIsRangesAndMaxArraySizeIsNamedUpFront) {
     TempDir d;
-    fake_slurm(d);
-    write_text(d.file("bin/sbatch"), "#!/bin/sh\necho \"$@\" >> \"$(dirname \"$0\")/sbatch.args\"\necho 4242\n");
-    write_text(d.file("bin/scontrol"), "#!/bin/sh\necho 'MaxArraySize            = 1001'\n");
-    for (const char* n : {"bin/sbatch", "bin/scontrol"})
-        fs::permissions(d.path / n, fs::perms::owner_all, fs::perm_options::add);
+    fake_slurm_recording(d, 1001);
     const std::string plan = d.file("p.json");
     ASSERT_FALSE(tiny_plan(d, plan).empty());
     auto r = run_spt(d, {"farm", "slurm", plan, "-o", d.file("out.spt")});
@@ -131,11 +138,7 @@ TEST(HostileFarm, TheArrayListIsRangesAndMaxArraySizeIsNamedUpFront) {
 
     // A cluster whose arrays stop below the plan's last shot: refused before anything is queued.
     TempDir e;
-    fake_slurm(e);
-    write_text(e.file("bin/sbatch"), "#!/bin/sh\necho \"$@\" >> \"$(dirname \"$0\")/sbatch.args\"\necho 4242\n");
-    write_text(e.file("bin/scontrol"), "#!/bin/sh\necho 'MaxArraySize            = 1'\n");
-    for (const char* n : {"bin/sbatch", "bin/scontrol"})
-        fs::permissions(e.path / n, fs::perms::owner_all, fs::perm_options::add);
+    fake_slurm_recording(e, 1);
     const std::string plan2 = e.file("p.json");
     ASSERT_FALSE(tiny_plan(e, plan2).empty());
     auto refused = run_spt(e, {"farm", "slurm", plan2, "-o", e.file("out.spt")});
