@@ -98,7 +98,9 @@ void declare(Args& a, bool plan) {
         .option("output", "FILE", plan ? "the plan to write, JSON (required); its tasks paint with the options below"
                                        : "the .spt file to write (required)", 'o')
         .option("style", "NAME", "painterly: stamps everywhere (the paper's painter); cartoon: flat-colour "
-                                 "regions as anti-aliased filled polygons, stamps only where they leave an error",
+                                 "regions as anti-aliased filled polygons, stamps only where they leave an error; "
+                                 "with --target-psnr never larger than the default painter, whose painting is "
+                                 "written instead where smaller (said on stderr)",
                 0, "painterly")
         .option("seed", "N", "random seed; the same seed and options give the same bytes whatever --threads", 0, "1")
         .option("sets", "N", "number of stroke sets, 3..10, large to small, sized from the canvas", 0, "6")
