@@ -126,7 +126,10 @@ int paint_still(const PaintCommandOptions& o) {
 int run_paint(const PaintCommandOptions& o, ShotRun* shot) {
     std::error_code ec;
     const bool clip = io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec);
-    if (o.style == job::Style::Cartoon) return shot ? paint_cartoon_shot(o, shot->metadata, shot->frames) : paint_cartoon(o);
+    switch (o.style) {
+        case job::Style::Cartoon: return shot ? paint_cartoon_shot(o, shot->metadata, shot->frames) : paint_cartoon(o);
+        case job::Style::Painterly: break;
+    }
     if (!shot) return clip ? paint_sequence(o) : paint_still(o);
     video::VideoPaintOptions v;
     if (int rc = video_options(o, v); rc >= 0) return rc;

@@ -35,10 +35,9 @@ std::string style_check(const PaintJob& j, const std::vector<std::string>& given
         if (r->styles == style_bit(Style::Cartoon)) return "--" + name + " applies to --style cartoon only";
         return std::string("--style ") + style_name(j.style) + " does not support --" + name;
     }
-    if (j.style == Style::Cartoon) {
-        if (j.alpha == "on") return "--style cartoon does not support --alpha on (it paints over --background; --alpha off flattens the input's alpha)";
-        if (j.color_encoding == "linear") return "--style cartoon does not support --color-encoding linear (it paints 8-bit sRGB)";
-    }
+    for (const OptionRow& r : option_rows())
+        if (r.check)
+            if (std::string e = r.check(j); !e.empty()) return e;
     return {};
 }
 

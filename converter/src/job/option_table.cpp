@@ -36,6 +36,7 @@ struct Row {
     Row& addon() { r.addon = true; return *this; }
     Row& set(std::function<std::string(PaintJob&, const std::string&)> f) { r.set = std::move(f); return *this; }
     Row& get(Get f) { r.get = std::move(f); return *this; }
+    Row& check(std::function<std::string(const PaintJob&)> f) { r.check = std::move(f); return *this; }
     Row& canon(int rank, Canon f) { r.canon_rank = rank; r.canon = std::move(f); return *this; }
 };
 
@@ -266,6 +267,10 @@ Rows colour_rows() {
             "values above 1 and smooth darks, for render output), auto: linear for float input (EXR, float TIFF), else srgb8")
             .def("auto").choices({"auto", "srgb8", "linear"}).group(kColour)
             .set([](PaintJob& j, const std::string& v) { j.color_encoding = v; return std::string(); })
+            .check([](const PaintJob& j) {
+                return cartoon(j) && j.color_encoding == "linear"
+                           ? "--style cartoon does not support --color-encoding linear (it paints 8-bit sRGB)" : "";
+            })
             .get([](const PaintJob& j) { return j.color_encoding != "auto" ? one(j.color_encoding) : none(); })
             .canon(18, [](std::ostream& s, const PaintJob& j) { if (j.color_encoding != "auto") s << " color-encoding=" << j.color_encoding; }),
         Row("alpha", "MODE", OptionKind::Choice,
@@ -274,6 +279,10 @@ Rows colour_rows() {
             "everywhere (a sequence: its first file)")
             .def("auto").choices({"auto", "on", "off"}).group(kColour)
             .set([](PaintJob& j, const std::string& v) { j.alpha = v; return std::string(); })
+            .check([](const PaintJob& j) {
+                return cartoon(j) && j.alpha == "on" ? "--style cartoon does not support --alpha on (it paints over "
+                                                       "--background; --alpha off flattens the input's alpha)" : "";
+            })
             .get([](const PaintJob& j) { return j.alpha != "auto" ? one(j.alpha) : none(); })
             .canon(19, [](std::ostream& s, const PaintJob& j) { if (j.alpha != "auto") s << " alpha=" << j.alpha; }),
         Row("colorspace", "NAME", OptionKind::Text,

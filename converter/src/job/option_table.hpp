@@ -55,6 +55,9 @@ struct OptionRow {
     // The job's value as a plan stores it (Painting rows): a flag "true", a list one text per
     // value; empty when absent.
     std::function<std::vector<std::string>(const PaintJob&)> get;
+    // A check of the stored value against the rest of the job, after every option is stored
+    // (a value the job's style cannot honour): "" or the whole message.
+    std::function<std::string(const PaintJob&)> check;
     // painter.options: the rows with a rank, in rank order, each writing " key=value" or nothing.
     int canon_rank = 0;
     std::function<void(std::ostream&, const PaintJob&)> canon;
