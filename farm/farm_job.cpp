@@ -236,6 +236,7 @@ Result<FarmStatus> farm_status(const std::string& plan_path, Engine* engine) {
         return v && v->is_string() ? v->text : std::string();
     };
     st.ids.engine = text("engine");
+    st.ids.state_dir = st.state_dir;
     st.ids.tasks_id = text("tasks_id");
     st.ids.join_id = text("join_id");
     st.output = text("output");
