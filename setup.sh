@@ -64,7 +64,7 @@ case "$mode" in
     ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 900
     # The fuzz corpora once more, through the instrumented targets (ASan, UBSan fatal): ctest
     # above replays them in the plain build, this one also sees memory errors and UB.
-    REPLAY=1 bench/fuzz_all.sh 0 "${build}-fuzz"
+    REPLAY=1 tests/fuzz/fuzz_all.sh 0 "${build}-fuzz"
     ;;
   *)
     echo "usage: ./setup.sh demo|test" >&2; exit 2 ;;
