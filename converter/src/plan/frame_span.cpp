@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include <opencv2/videoio.hpp>
 
 #include "io/sequence.hpp"
 #include "plan/gray_frames.hpp"
+#include "video/ffmpeg_video.hpp"
 
 namespace spt::plan {
 
@@ -20,14 +20,7 @@ long range_last(const io::FrameRange& r) {
 
 }  // namespace
 
-Result<uint64_t> count_video_packets(const std::string& path) {
-    cv::VideoCapture cap;
-    if (!cap.open(path, cv::CAP_FFMPEG, {cv::CAP_PROP_FORMAT, -1}))
-        return make_error(Code::IoError, path + ": OpenCV cannot open this video file");
-    uint64_t n = 0;
-    while (cap.grab()) ++n;
-    return n;
-}
+Result<uint64_t> count_video_packets(const std::string& path) { return video::count_video_packets(path); }
 
 Result<FrameSpan> probe_frames(const std::string& input, const std::string& frames) {
     Result<io::FrameRange> range = io::parse_frame_range(frames);

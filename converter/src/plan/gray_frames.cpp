@@ -9,7 +9,6 @@
 
 #include <OpenImageIO/imageio.h>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
@@ -57,9 +56,9 @@ public:
     Status open() { return video_.open(); }
 
     Result<bool> next(long& number, cv::Mat& gray) override {
-        if (!video_.next(number, bgr_)) return false;
-        if (bgr_.channels() == 1) bgr_.copyTo(gray_);
-        else cv::cvtColor(bgr_, gray_, bgr_.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+        Result<bool> got = video_.next(number, bgr_);
+        if (!got || !*got) return got;
+        cv::cvtColor(bgr_, gray_, cv::COLOR_BGR2GRAY);
         if (Status st = video_.check_size(number, gray_.cols, gray_.rows); !st) return st.error();
         gray = gray_;  // shares the buffer: the caller reads it before the next call
         return true;

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "video/video_paint.hpp"
 #include "video/video_reader.hpp"
+#include "video/video_scene.hpp"
 
 namespace spt::video {
 
@@ -93,21 +93,28 @@ private:
 
 class VideoFileSource final : public FrameSource {
 public:
-    VideoFileSource(std::string path, io::FrameRange range) : video_(std::move(path), std::move(range)) {}
+    VideoFileSource(std::string path, io::FrameRange range, const io::SceneReadOptions* scene)
+        : video_(std::move(path), std::move(range)), scene_(scene != nullptr) {
+        if (scene) scene_opts_ = *scene;
+    }
 
     Status open() { return video_.open(); }
 
     Result<bool> next(SourceFrame& out) override {
-        cv::Mat bgr;
         long number = 0;
-        if (!video_.next(number, bgr)) return false;
+        Result<bool> got = video_.next(number, bgr_, scene_ && video_.deep());
+        if (!got || !*got) return got;
         out = SourceFrame{};
         out.number = number;
+        if (Status st = video_.check_size(number, bgr_.cols, bgr_.rows); !st) return st.error();
+        if (scene_) {
+            Result<io::SceneImage> img = scene_from_frame(bgr_, video_.has_alpha(), scene_opts_, video_.path());
+            if (!img) return img.error();
+            out.scene = std::move(*img);
+            return true;
+        }
         cv::Mat rgb;
-        if (bgr.channels() == 1) cv::cvtColor(bgr, rgb, cv::COLOR_GRAY2RGB);
-        else if (bgr.channels() == 4) cv::cvtColor(bgr, rgb, cv::COLOR_BGRA2RGB);
-        else cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-        if (Status st = video_.check_size(number, rgb.cols, rgb.rows); !st) return st.error();
+        cv::cvtColor(bgr_, rgb, cv::COLOR_BGR2RGB);
         out.image.width = uint32_t(rgb.cols);
         out.image.height = uint32_t(rgb.rows);
         out.image.rgb.assign(rgb.data, rgb.data + rgb.total() * 3);
@@ -121,6 +128,9 @@ public:
 
 private:
     VideoReader video_;
+    bool scene_ = false;
+    io::SceneReadOptions scene_opts_;
+    cv::Mat bgr_;
 };
 
 }  // namespace
@@ -130,10 +140,7 @@ Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const
     Result<io::FrameRange> range = io::parse_frame_range(frames);
     if (!range) return range.error();
     if (io::is_video_file(input)) {
-        if (scene)
-            return make_error(Code::InvalidArgument, input + ": alpha and scene-linear painting needs an image "
-                                                             "sequence (EXR, PNG, TIFF), not a video file");
-        auto src = std::make_unique<VideoFileSource>(input, *range);
+        auto src = std::make_unique<VideoFileSource>(input, *range, scene);
         Status st = src->open();
         if (!st) return st.error();
         return std::unique_ptr<FrameSource>(std::move(src));

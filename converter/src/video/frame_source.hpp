@@ -1,5 +1,5 @@
 // Where video frames come from: an image sequence (through spt::io) or a video file (through
-// OpenCV). Sources stream: one frame in memory at a time.
+// FFmpeg). Sources stream: one frame in memory at a time.
 #pragma once
 
 #include <cstdint>
@@ -40,9 +40,9 @@ public:
 };
 
 // Opens a sequence pattern or folder (spt::io::list_sequence) or a video file
-// (spt::io::is_video_file, cv::VideoCapture). `frames` is "A-B" or empty. With `scene`, a
-// sequence's frames are read with io::read_scene_image into SourceFrame::scene (video files
-// are then refused: they hold no alpha or scene-linear light).
+// (spt::io::is_video_file, video/ffmpeg_video.hpp). `frames` is "A-B" or empty. With `scene`,
+// a sequence's frames are read with io::read_scene_image into SourceFrame::scene, and a video's
+// are converted the same way (video/video_scene.hpp).
 Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const std::string& frames,
                                                  bool skip_bad_frames, const io::SceneReadOptions* scene = nullptr);
 

@@ -12,6 +12,7 @@
 #include "io/roi_file.hpp"
 #include "video/stop_signal.hpp"
 #include "video/video_encoder.hpp"
+#include "video/video_scene.hpp"
 #include "spt/utf8.hpp"
 #include "spt/concat.hpp"
 
@@ -44,6 +45,14 @@ void merge_metadata(std::vector<std::pair<std::string, std::string>>& meta,
     }
 }
 
+// The first file of the whole sequence, read as scene-linear light.
+Result<io::SceneImage> first_scene_file(const VideoPaintOptions& opts) {
+    Result<std::vector<io::SequenceFile>> all = io::list_sequence(opts.input);
+    if (!all) return all.error();
+    if (all->empty()) return make_error(Code::IoError, opts.input + ": no frames found");
+    return io::read_scene_image(all->front().path, opts.scene_read);
+}
+
 bool frames_consecutive(const std::string& frames) {
     Result<io::FrameRange> r = io::parse_frame_range(frames);
     return r && (r->empty() || (r->spans.size() == 1 && r->step(0) == 1));
@@ -64,21 +73,25 @@ Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoP
     }
     // Format 1.3 targets. "auto" is decided on the first file of the whole sequence (not of
     // --frames), and so is the linear proxy's peak, so that every farm task of a plan paints
-    // the same way as one process would. Video files hold neither alpha nor scene-linear light.
+    // the same way as one process would; a video file's first frame decides for a video file.
     if (opts.color_encoding != "auto" && opts.color_encoding != "srgb8" && opts.color_encoding != "linear")
         return make_error(Code::InvalidArgument, "--color-encoding: expected auto, srgb8 or linear, got '" + opts.color_encoding + "'");
     if (opts.alpha != "auto" && opts.alpha != "on" && opts.alpha != "off")
         return make_error(Code::InvalidArgument, "--alpha: expected auto, on or off, got '" + opts.alpha + "'");
+    const bool video = io::is_video_file(opts.input);
+    bool video_alpha = false;
+    if (video && opts.alpha == "auto" && opts.color_encoding != "linear") {
+        Result<bool> a = video_has_alpha(opts.input);
+        if (!a) return a.error();
+        video_alpha = *a;
+    }
     const bool want_scene = !(opts.color_encoding == "srgb8" && opts.alpha == "off") &&
-                            !(io::is_video_file(opts.input) && opts.color_encoding != "linear" && opts.alpha != "on");
+                            !(video && opts.color_encoding != "linear" && opts.alpha != "on" && !video_alpha);
     paint::SceneTarget target = opts.scene;
     bool scene = false;
     double peak = 1.0;
-    if (want_scene && !io::is_video_file(opts.input)) {
-        Result<std::vector<io::SequenceFile>> all = io::list_sequence(opts.input);
-        if (!all) return all.error();
-        if (all->empty()) return make_error(Code::IoError, opts.input + ": no frames found");
-        Result<io::SceneImage> first = io::read_scene_image(all->front().path, opts.scene_read);
+    if (want_scene) {
+        Result<io::SceneImage> first = video ? first_scene_frame(opts.input, opts.scene_read) : first_scene_file(opts);
         if (!first) return first.error();
         const paint::LinearView lv{first->width, first->height, first->rgba.data()};
         target.linear = opts.color_encoding == "linear" || (opts.color_encoding == "auto" && first->is_float);
