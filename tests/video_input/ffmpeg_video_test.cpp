@@ -6,6 +6,8 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +23,8 @@
 #include "io/sequence.hpp"
 #include "video/ffmpeg_video.hpp"
 #include "video/video_reader.hpp"
+#include "video/video_scene.hpp"
+#include "io/scene_image.hpp"
 #include "video_input_util.hpp"
 
 using namespace spt;
@@ -50,8 +54,9 @@ bool same(const cv::Mat& a, const cv::Mat& b) {
     return a.size() == b.size() && a.type() == b.type() && cv::norm(a, b, cv::NORM_INF) == 0;
 }
 
-// Opens the file afresh for every frame, seeks to it and compares with sequential decoding.
-void expect_exact_seek(const std::string& path, size_t frames) {
+// Opens the file afresh for every frame, seeks to it and compares with sequential decoding;
+// each seek decodes from the key frame before its frame (`gop` frames apart), not the start.
+void expect_exact_seek(const std::string& path, size_t frames, uint64_t gop) {
     std::vector<long> numbers;
     const std::vector<cv::Mat> all = decode_all(path, &numbers);
     ASSERT_EQ(all.size(), frames) << path;
@@ -66,6 +71,7 @@ void expect_exact_seek(const std::string& path, size_t frames) {
         ASSERT_TRUE(got.ok() && *got) << path << " frame " << n;
         EXPECT_EQ(got_n, n) << path;
         EXPECT_TRUE(same(m, all[size_t(n)])) << path << ": frame " << n << " after a seek differs from sequential decoding";
+        EXPECT_LE(v.decoded_frames(), 2 * gop + 4) << path << ": frame " << n << " decoded from too far back";
     }
     // Backwards within one reader too.
     video::FfmpegVideo v;
@@ -86,7 +92,7 @@ TEST(FfmpegVideo, ExactSeekEqualsSequentialDecodeH264WithBFrames) {
     Dir d("seek_h264");
     const std::string f = d.file("gop.mp4");
     make_video(f, "-f lavfi -i testsrc2=s=96x64:r=24 -frames:v 60 -c:v libx264 -g 12 -bf 3 -pix_fmt yuv420p");
-    expect_exact_seek(f, 60);
+    expect_exact_seek(f, 60, 12);
 }
 
 TEST(FfmpegVideo, ExactSeekEqualsSequentialDecodeMpeg2ProgramStream) {
@@ -94,14 +100,32 @@ TEST(FfmpegVideo, ExactSeekEqualsSequentialDecodeMpeg2ProgramStream) {
     Dir d("seek_mpg");
     const std::string f = d.file("gop.mpg");
     make_video(f, "-f lavfi -i testsrc2=s=96x64:r=25 -frames:v 50 -c:v mpeg2video -g 10 -bf 2 -f mpeg");
-    expect_exact_seek(f, 50);
+    expect_exact_seek(f, 50, 10);
 }
 
 TEST(FfmpegVideo, ExactSeekEqualsSequentialDecodeMpeg4Avi) {
     Dir d("seek_avi");
     const std::string f = d.file("gop.avi");
     make_video(f, "-f lavfi -i testsrc2=s=96x64:r=18 -frames:v 40 -c:v mpeg4 -g 8");
-    expect_exact_seek(f, 40);
+    expect_exact_seek(f, 40, 8);
+}
+
+TEST(FfmpegVideo, ExactSeekOnTheSharedCityClip) {
+    // OpenCV's seek gave frame 13 for frames 1 and 8 of this MPEG-2 program stream (open GOPs).
+    const std::string f = std::string(SPT_MEDIA_DIR) + "/video/city.mpg";
+    ASSERT_TRUE(fs::exists(f)) << f << " is missing (the shared media)";
+    const auto all = decode_all(f);
+    ASSERT_EQ(all.size(), 190u);
+    for (long n : {1L, 8L, 13L, 14L, 115L, 116L, 117L, 189L}) {
+        video::FfmpegVideo v;
+        ASSERT_TRUE(v.open(f).ok());
+        ASSERT_TRUE(v.seek(n).ok());
+        long got_n = -1;
+        cv::Mat m;
+        ASSERT_TRUE(*v.next(got_n, m));
+        EXPECT_EQ(got_n, n);
+        EXPECT_TRUE(same(m, all[size_t(n)])) << "city.mpg frame " << n << " after a seek";
+    }
 }
 
 TEST(FfmpegVideo, VariableFrameRateFramesAreNumberedInTimeOrder) {
@@ -122,7 +146,7 @@ TEST(FfmpegVideo, VariableFrameRateFramesAreNumberedInTimeOrder) {
     ASSERT_GT(*steps.begin(), 30) << "two frames (nearly) share a time";
     ASSERT_LT(*steps.begin(), 50);
     ASSERT_GT(*steps.rbegin(), 100) << "the file is not variable-rate";
-    expect_exact_seek(f, 30);
+    expect_exact_seek(f, 30, 7);
 }
 
 TEST(FfmpegVideo, RotationMetadataIsApplied) {
@@ -284,4 +308,29 @@ TEST(FfmpegVideo, ARangeDecodesFromTheKeyFrameBeforeIt) {
     }
     EXPECT_EQ(got, (std::vector<long>{5, 6, 200, 201}));
     EXPECT_LE(r2.decoded_frames(), 2u * 30u);
+}
+
+TEST(FfmpegVideo, AnAlphaVideoFrameReadsAsThePngOfItDoes) {
+    // PNG in MOV holds PNG frames: frame 0 read for an alpha canvas must be the scene image the
+    // scene-linear reader makes of the same frame written as a PNG file.
+    Dir d("alpha_png");
+    const std::string mov = d.file("png.mov"), png = d.file("f0.png");
+    make_video(mov, "-f lavfi -i testsrc2=s=96x64:r=12 -frames:v 2 -vf \"format=rgba,geq=r='r(X,Y)':g='g(X,Y)':"
+                    "b='b(X,Y)':a='if(lt(X,48),X*5,255)'\" -c:v png -pix_fmt rgba");
+    run_ok("ffmpeg -v error -nostdin -y -i '" + mov + "' -frames:v 1 '" + png + "'");
+    Result<io::SceneImage> v = video::first_scene_frame(mov, {});
+    ASSERT_TRUE(v.ok()) << v.error().message;
+    Result<io::SceneImage> p = io::read_scene_image(png);
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    EXPECT_TRUE(v->has_alpha);
+    ASSERT_EQ(v->rgba.size(), p->rgba.size());
+    double worst = 0;
+    size_t differ = 0;
+    for (size_t i = 0; i < v->rgba.size(); ++i) {
+        worst = std::max(worst, double(std::abs(v->rgba[i] - p->rgba[i])));
+        if (v->rgba[i] != p->rgba[i] && differ++ < 4)
+            ADD_FAILURE() << "sample " << i << " (channel " << i % 4 << "): video " << v->rgba[i] << ", png " << p->rgba[i]
+                          << ", alpha " << p->rgba[i - i % 4 + 3];
+    }
+    EXPECT_EQ(differ, 0u) << "largest difference " << worst;
 }

@@ -37,6 +37,11 @@ Status open_demux(const std::string& path, Demux& d) {
     // FFmpeg's own log lines would repeat what spt's errors and warnings say, without the
     // frame numbers; spt reports for it.
     av_log_set_level(AV_LOG_FATAL);
+    // Packets without a presentation time (MPEG-PS gives one only every few frames) get one
+    // from the packets after them: frame numbers and seeks are by presentation time.
+    d.fmt = avformat_alloc_context();
+    if (!d.fmt) return make_error(Code::IoError, path + ": out of memory opening the video");
+    d.fmt->flags |= AVFMT_FLAG_GENPTS;
     if (int e = avformat_open_input(&d.fmt, path.c_str(), nullptr, nullptr); e < 0)
         return make_error(Code::IoError, path + ": cannot open this video file (" + av_text(e) + ")");
     if (int e = avformat_find_stream_info(d.fmt, nullptr); e < 0)
@@ -46,7 +51,7 @@ Status open_demux(const std::string& path, Demux& d) {
     return {};
 }
 
-int64_t packet_time(const AVPacket* p) { return p->pts != AV_NOPTS_VALUE ? p->pts : p->dts; }
+int64_t packet_time(const AVPacket* p) { return p->pts; }
 
 }  // namespace
 
@@ -69,7 +74,7 @@ struct FfmpegVideo::Impl {
     long last = -1;       // the number of the last frame decoded
     bool draining = false, ended = false;
     uint64_t decoded = 0;
-    cv::Mat converted;
+    cv::Mat padded, converted, wide;
 
     ~Impl() {
         sws_freeContext(sws);
@@ -176,16 +181,18 @@ struct FfmpegVideo::Impl {
         return {};
     }
 
-    // To the key frame at or before time `t`; true when the demuxer's next key packet of the
-    // stream is no later than `t` (that packet is left in `pkt`, to be sent first).
-    bool seek_to(int64_t t) {
+    // Towards the key frame at or before time `t`; true when the demuxer's next key packet of
+    // the stream is no later than `limit` (that packet is left in `pkt`, to be sent first, and
+    // its time in `landed`).
+    bool seek_to(int64_t t, int64_t limit, int64_t& landed) {
         if (av_seek_frame(dx.fmt, dx.stream, t, AVSEEK_FLAG_BACKWARD) < 0) return false;
         avcodec_flush_buffers(dec);
         draining = ended = false;
         while (av_read_frame(dx.fmt, pkt) >= 0) {
             if (pkt->stream_index == dx.stream && (pkt->flags & AV_PKT_FLAG_KEY)) {
                 const int64_t pt = packet_time(pkt);
-                if (pt != AV_NOPTS_VALUE && pt <= t) {
+                if (pt != AV_NOPTS_VALUE && pt <= limit) {
+                    landed = pt;
                     have_pending = true;
                     return true;
                 }
@@ -207,10 +214,13 @@ struct FfmpegVideo::Impl {
         // Already before the target with no key frame between: decoding on is cheapest.
         const long key_number = number_of(*(k - 1));
         if (key_number >= 0 && last < want && last + 1 >= key_number && !ended) return {};
-        // Some containers land after the time asked for: then try earlier key frames.
+        // Some containers land after the time asked for (MPEG-PS: on the next key frame, found
+        // by scanning): then ask for earlier key frames.
+        const int64_t limit = *(k - 1);
         for (int tries = 0; tries < 3 && k != keys.begin(); ++tries, --k) {
-            if (seek_to(*(k - 1))) {
-                last = number_of(*(k - 1)) - 1;
+            int64_t landed = 0;
+            if (seek_to(*(k - 1), limit, landed)) {
+                last = number_of(landed) - 1;
                 return {};
             }
         }
@@ -253,6 +263,10 @@ struct FfmpegVideo::Impl {
                 }
             }
             have_pending = false;
+            // Frames shown before the one wanted that nothing refers to need not be decoded.
+            const int64_t t = packet_time(pkt);
+            const bool before = timed && size_t(want) < times.size() && t != AV_NOPTS_VALUE && t < times[size_t(want)];
+            dec->skip_frame = before ? AVDISCARD_NONREF : AVDISCARD_DEFAULT;
             avcodec_send_packet(dec, pkt);  // a packet that does not decode is skipped
             av_packet_unref(pkt);
         }
@@ -260,25 +274,34 @@ struct FfmpegVideo::Impl {
 
     Status convert(cv::Mat& out) {
         const int w = frame->width, h = frame->height;
-        const AVPixelFormat to = deep ? AV_PIX_FMT_RGBA64 : AV_PIX_FMT_BGR24;
+        const AVPixFmtDescriptor* pd = av_pix_fmt_desc_get(AVPixelFormat(frame->format));
+        const bool rgb = pd && (pd->flags & AV_PIX_FMT_FLAG_RGB);
+        // 8-bit RGB with alpha (PNG in MOV) converts to RGBA as it is, then widens exactly (x 257):
+        // swscale's path to 16 bits rounds it.
+        const bool rgba8 = deep && rgb && pd->comp[0].depth <= 8;
+        const AVPixelFormat to = rgba8 ? AV_PIX_FMT_RGBA : deep ? AV_PIX_FMT_RGBA64 : AV_PIX_FMT_BGR24;
         // SWS_BICUBIC and no colour details for 8-bit sources: OpenCV's call, so its bytes.
         sws = sws_getCachedContext(sws, w, h, AVPixelFormat(frame->format), w, h, to, SWS_BICUBIC, nullptr, nullptr,
                                    nullptr);
         if (!sws) return make_error(Code::Unsupported, path + ": cannot convert its pixel format (" +
                                                            std::string(av_get_pix_fmt_name(AVPixelFormat(frame->format))) + ")");
-        if (deep) {
-            // Deep sources are new to spt: read them with their own matrix and range.
+        if (deep && !rgb) {
+            // Deep YUV sources are new to spt: read them with their own matrix and range.
             const int cs = frame->colorspace == AVCOL_SPC_UNSPECIFIED ? SWS_CS_DEFAULT : int(frame->colorspace);
             const int full = frame->color_range == AVCOL_RANGE_JPEG ? 1 : 0;
-            const AVPixFmtDescriptor* pd = av_pix_fmt_desc_get(AVPixelFormat(frame->format));
-            const bool rgb = pd && (pd->flags & AV_PIX_FMT_FLAG_RGB);
-            sws_setColorspaceDetails(sws, sws_getCoefficients(cs), rgb ? 1 : full, sws_getCoefficients(SWS_CS_DEFAULT), 1,
-                                     0, 1 << 16, 1 << 16);
+            sws_setColorspaceDetails(sws, sws_getCoefficients(cs), full, sws_getCoefficients(SWS_CS_DEFAULT), 1, 0,
+                                     1 << 16, 1 << 16);
         }
-        converted.create(h, w, deep ? CV_16UC4 : CV_8UC3);
+        // swscale's SIMD writes up to a few bytes past a row's end: rows to spare below.
+        padded.create(h + 2, w, rgba8 ? CV_8UC4 : deep ? CV_16UC4 : CV_8UC3);
+        converted = padded.rowRange(0, h);
         uint8_t* dst[4] = {converted.data, nullptr, nullptr, nullptr};
         int stride[4] = {int(converted.step[0]), 0, 0, 0};
         sws_scale(sws, frame->data, frame->linesize, 0, h, dst, stride);
+        if (rgba8) {
+            converted.convertTo(wide, CV_16U, 257.0);
+            converted = wide;
+        }
         if (rotation == 0) {
             converted.copyTo(out);
         } else {

@@ -108,7 +108,8 @@ public:
         out.number = number;
         if (Status st = video_.check_size(number, bgr_.cols, bgr_.rows); !st) return st.error();
         if (scene_) {
-            Result<io::SceneImage> img = scene_from_frame(bgr_, video_.has_alpha(), scene_opts_, video_.path());
+            Result<io::SceneImage> img = scene_from_frame(bgr_, video_.has_alpha(), video_.bit_depth(), scene_opts_,
+                                                            video_.path());
             if (!img) return img.error();
             out.scene = std::move(*img);
             return true;

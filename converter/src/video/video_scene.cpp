@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <opencv2/imgproc.hpp>
 
 #include "io/color_config.hpp"
 #include "video/ffmpeg_video.hpp"
@@ -9,7 +10,7 @@
 
 namespace spt::video {
 
-Result<io::SceneImage> scene_from_frame(const cv::Mat& frame, bool alpha, const io::SceneReadOptions& opts,
+Result<io::SceneImage> scene_from_frame(const cv::Mat& frame, bool alpha, int depth, const io::SceneReadOptions& opts,
                                         const std::string& path) {
     const auto fail = [&](const Error& e) { return make_error(e.code, path + ": " + e.message); };
     auto cs = io::color_config(opts.ocio_config);
@@ -28,23 +29,19 @@ Result<io::SceneImage> scene_from_frame(const cv::Mat& frame, bool alpha, const 
     img.has_alpha = alpha;
     img.colorspace = *from;
     img.rgba.resize(size_t(img.width) * img.height * 4);
-    const bool deep = frame.depth() == CV_16U;
-    for (int y = 0; y < frame.rows; ++y) {
-        float* o = img.rgba.data() + size_t(y) * img.width * 4;
-        if (deep) {
-            const uint16_t* p = frame.ptr<uint16_t>(y);
-            for (int x = 0; x < frame.cols; ++x, p += 4, o += 4) {
-                for (int k = 0; k < 3; ++k) o[k] = float(p[k]) / 65535.f;
-                o[3] = alpha ? float(p[3]) / 65535.f : 1.f;
-            }
-        } else {
-            const uint8_t* p = frame.ptr<uint8_t>(y);
-            for (int x = 0; x < frame.cols; ++x, p += 3, o += 4) {
-                for (int k = 0; k < 3; ++k) o[k] = float(p[2 - k]) / 255.f;
-                o[3] = 1.f;
-            }
-        }
-    }
+    // Samples to float as OpenImageIO converts an image file's (8-bit sources at 8 bits, so an
+    // 8-bit video with alpha reads as a PNG of its frame does).
+    cv::Mat rgba;
+    if (frame.depth() == CV_16U) rgba = frame;
+    else cv::cvtColor(frame, rgba, cv::COLOR_BGR2RGBA);
+    if (rgba.depth() == CV_16U && depth <= 8) rgba.convertTo(rgba, CV_8U, 255.0 / 65535.0);
+    const OIIO::TypeDesc type = rgba.depth() == CV_16U ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
+    OIIO::ImageSpec src_spec(rgba.cols, rgba.rows, 4, type);
+    OIIO::ImageBuf src(src_spec, rgba.data, OIIO::AutoStride, OIIO::stride_t(rgba.step[0]));
+    if (!src.get_pixels(OIIO::ROI(0, rgba.cols, 0, rgba.rows, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, img.rgba.data()))
+        return make_error(Code::Unsupported, path + ": cannot convert a frame's samples: " + src.geterror());
+    if (!alpha)
+        for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.f;
     // Straight alpha: converted as it is, then premultiplied (scene_image.cpp's PNG path).
     OIIO::ImageSpec bs(int(img.width), int(img.height), 4, OIIO::TypeDesc::FLOAT);
     bs.alpha_channel = 3;
@@ -77,7 +74,7 @@ Result<io::SceneImage> first_scene_frame(const std::string& path, const io::Scen
     Result<bool> got = r.next(number, frame, r.deep());
     if (!got) return got.error();
     if (!*got) return make_error(Code::IoError, path + ": no frames to paint");
-    return scene_from_frame(frame, r.has_alpha(), opts, path);
+    return scene_from_frame(frame, r.has_alpha(), r.bit_depth(), opts, path);
 }
 
 }  // namespace spt::video

@@ -15,8 +15,9 @@ namespace spt::video {
 // `frame`: 8-bit BGR or 16-bit RGBA (straight alpha, as video codecs store it), in the colour
 // space `opts.colorspace` names (empty: sRGB). Converted to linear Rec.709 through the same
 // OCIO config and transforms as an image file, then premultiplied. `alpha`: the file has an
-// alpha channel (else alpha is 1 and has_alpha false). Errors name `path`.
-Result<io::SceneImage> scene_from_frame(const cv::Mat& frame, bool alpha, const io::SceneReadOptions& opts,
+// alpha channel (else alpha is 1 and has_alpha false); `depth`: the source's bits a sample.
+// Errors name `path`.
+Result<io::SceneImage> scene_from_frame(const cv::Mat& frame, bool alpha, int depth, const io::SceneReadOptions& opts,
                                         const std::string& path);
 
 // Whether a video file's stream holds alpha (read from its header; nothing is decoded).
