@@ -11,9 +11,8 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
+#include "video/ffmpeg_video.hpp"
 
 #include "io/image_io.hpp"
 #include "io/progress.hpp"
@@ -55,10 +54,11 @@ class Pool {
 public:
     explicit Pool(const fs::path& dir) : dir_(dir) {
         fs::create_directories(dir);
-        cv::VideoCapture cap(kMedia + "/video/city.mpg");
-        EXPECT_TRUE(cap.isOpened()) << "the shared media are needed: " << kMedia;
+        spt::video::FfmpegVideo cap;
+        EXPECT_TRUE(cap.open(kMedia + "/video/city.mpg").ok()) << "the shared media are needed: " << kMedia;
         cv::Mat f;
-        while (cap.read(f)) add("city", f);  // its own hard cut at frame 116
+        long n = 0;
+        while (*cap.next(n, f)) add("city", f);  // its own hard cut at frame 116
         for (int i = 1; i <= 48; ++i) add_file("earth", frame_name("exr/earth/earth.", i, ".exr"));
         for (int i = 1; i <= 24; ++i) add_file("orbit", frame_name("exr/orbit/orbit.", i, ".exr"));
         for (int i = 0; i <= 60; ++i) add_file("taffy", frame_name("cartoon/taffy/f.", i, ".png"));
@@ -91,7 +91,9 @@ private:
         cv::resize(bgr, m, cv::Size(480, 270), 0, 0, cv::INTER_AREA);
         auto& v = clips_[name];
         const fs::path p = dir_ / (name + "." + std::to_string(v.size()) + ".png");
-        ASSERT_TRUE(cv::imwrite(p.string(), m));
+        cv::Mat rgb;
+        cv::cvtColor(m, rgb, cv::COLOR_BGR2RGB);
+        ASSERT_TRUE(spt::io::write_image(p.string(), uint32_t(rgb.cols), uint32_t(rgb.rows), rgb.data).ok());
         v.push_back(p);
     }
     fs::path dir_;

@@ -17,12 +17,12 @@
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "io/image_io.hpp"
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
 #include "synthetic.hpp"
+#include "video/ffmpeg_writer.hpp"
 
 using namespace spt;
 namespace fs = std::filesystem;
@@ -180,14 +180,14 @@ TEST(VideoCli, PaintsAnAviAndRenderSeeksIntoTheMiddle) {
     const std::string avi = (dir / "clip.avi").string();
     const int w = 96, h = 64, frames = 16;
     {
-        cv::VideoWriter vw(avi, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 12.0, cv::Size(w, h));
-        if (!vw.isOpened()) GTEST_FAIL() << "OpenCV cannot write MJPG AVI here";
+        video::VideoFileWriter vw;  // Motion JPEG in AVI
+        Status st = vw.open(avi, ".avi", avi, 12.0, uint32_t(w), uint32_t(h));
+        if (!st) GTEST_FAIL() << st.error().message;
         for (int f = 0; f < frames; ++f) {
             auto rgb = spt_test::scene_frame(0, f, w, h);
-            cv::Mat m(h, w, CV_8UC3, rgb.data()), bgr;
-            cv::cvtColor(m, bgr, cv::COLOR_RGB2BGR);
-            vw.write(bgr);
+            ASSERT_TRUE(vw.write_rgb(rgb.data()).ok());
         }
+        ASSERT_TRUE(vw.finish().ok());
     }
     const std::string out = (dir / "clip.spt").string();
     ASSERT_EQ(run_tool({"paint", avi, "-o", out, "--sets", "4", "--max-strokes", "400", "--threads", "2",

@@ -1,13 +1,13 @@
 #include "cartoon/line_trace.hpp"
 
 #include "cartoon/fit_outline.hpp"
+#include "cartoon/thinning.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <unordered_set>
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/ximgproc.hpp>
 
 namespace spt::cartoon {
 
@@ -117,7 +117,7 @@ LineShape centrelines(const Regions& regs, int index) {
             }
     if (out.pixels == 0) return out;
     cv::Mat sk, dist;
-    cv::ximgproc::thinning(mask, sk, cv::ximgproc::THINNING_ZHANGSUEN);
+    thin_zhang_suen(mask, sk);
     cv::distanceTransform(mask, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
     // Spurs: a branch from an end to a junction no longer than the line is wide there is the
     // thinning's answer to a corner or a bump, not a line; dropped, its junction joins the

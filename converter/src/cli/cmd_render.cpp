@@ -3,9 +3,6 @@
 #include <filesystem>
 #include <system_error>
 
-#include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
@@ -18,6 +15,7 @@
 #include "spt/concat.hpp"
 #include "spt_import/shapes.hpp"
 #include "spt/spt.hpp"
+#include "video/ffmpeg_writer.hpp"
 
 namespace spt::cli {
 
@@ -52,51 +50,47 @@ std::string lower_ext(const std::string& p) {
     return e;
 }
 
-// A preview video through OpenCV, written inside a private folder (io/private_output.hpp) and
-// moved into place when complete.
+// A preview video through FFmpeg (video/ffmpeg_writer.hpp), written inside a private folder
+// (io/private_output.hpp) and moved into place when complete.
 class VideoOut {
 public:
     bool open(const std::string& path, double fps, uint32_t w, uint32_t h, std::string& err) {
-        const std::string ext = lower_ext(path);
         auto p = io::PrivateOutput::create(path);
         if (!p) {
             err = p.error().message;
             return false;
         }
-        out_ = std::move(*p);  // OpenCV picks the container from the extension, kept by file()
-        const int fourcc = ext == ".avi" ? cv::VideoWriter::fourcc('M', 'J', 'P', 'G')
-                                         : cv::VideoWriter::fourcc('m', 'p', '4', 'v');
-        if (!writer_.open(out_.file(), cv::CAP_FFMPEG, fourcc, fps > 0 ? fps : 24.0, cv::Size(int(w), int(h)))) {
-            err = path + ": OpenCV cannot create a " + ext + " video here";
+        out_ = std::move(*p);  // the container is named by the extension, kept by file()
+        if (Status s = writer_.open(out_.file(), lower_ext(path), path, fps > 0 ? fps : 24.0, w, h); !s) {
+            err = s.error().message;
             discard();
             return false;
         }
         return true;
     }
-    void write(const Canvas& c, const Header& h, const io::CanvasImageOptions& o) {
+    bool write(const Canvas& c, const Header& h, const io::CanvasImageOptions& o, std::string& err) {
         // A plain canvas as it is; others flattened and viewed as a JPEG would be.
         if (!h.plain_color() || o.view) flat_ = io::canvas_rgb8(c, h, o);
-        cv::Mat rgb(int(c.height), int(c.width), CV_8UC3,
-                    const_cast<uint8_t*>(h.plain_color() && !o.view ? c.rgb.data() : flat_.data()));
-        cv::cvtColor(rgb, bgr_, cv::COLOR_RGB2BGR);
-        writer_.write(bgr_);
+        Status s = writer_.write_rgb(h.plain_color() && !o.view ? c.rgb.data() : flat_.data());
+        if (!s) err = s.error().message;
+        return s.ok();
     }
     bool finish(std::string& err) {
-        writer_.release();
+        if (Status s = writer_.finish(); !s) {
+            err = s.error().message;
+            discard();
+            return false;
+        }
         if (Status s = out_.commit(); !s) {
             err = s.error().message;
             return false;
         }
         return true;
     }
-    void discard() {
-        writer_.release();
-        out_.discard();
-    }
+    void discard() { out_.discard(); }
 private:
-    cv::VideoWriter writer_;
+    video::VideoFileWriter writer_;
     io::PrivateOutput out_;
-    cv::Mat bgr_;
     std::vector<uint8_t> flat_;
 };
 
@@ -251,7 +245,10 @@ int cmd_render(int argc, char** argv) {
             continue;
         }
         if (video) {
-            vout.write(canvas, h, img);
+            if (!vout.write(canvas, h, img, err)) {
+                vout.discard();
+                return fail(err);
+            }
         } else {
             const std::string name = sequence ? io::format_frame(out, f + start) : out;
             std::string note;

@@ -29,7 +29,7 @@ const char* flow_method_name(FlowMethod m);
 
 struct VideoPaintOptions {
     // Input: a sequence pattern ("shot.####.exr", "shot.%04d.png", "shot.1-120#.png"), a folder
-    // of frames, or a video file (anything OpenCV's VideoCapture opens).
+    // of frames, or a video file (anything FFmpeg's libraries decode: video/ffmpeg_video.hpp).
     std::string input;
     std::string output;               // the .spt file
     bool atomic_rename = true;        // false: `output` is a trial file, written in place
