@@ -188,25 +188,30 @@ TEST(FfmpegVideo, RotationMetadataIsApplied) {
     }
 }
 
-TEST(FfmpegVideo, TenBitSourceIsReadAtItsDepth) {
-    // A luma ramp of 10-bit codes across 1024 columns, lossless (FFV1): more than 256 levels
-    // survive, which no 8-bit path could give.
-    Dir d("10bit");
-    const std::string f = d.file("ramp.mkv");
-    make_video(f, "-f lavfi -i nullsrc=s=1024x8:r=24 -frames:v 2 -vf \"format=yuv444p10le,geq=lum='X':cb=512:cr=512\" "
-                  "-c:v ffv1 -pix_fmt yuv444p10le");
-    video::FfmpegVideo v;
-    ASSERT_TRUE(v.open(f).ok());
-    EXPECT_TRUE(v.deep());
-    EXPECT_EQ(v.bit_depth(), 10);
-    EXPECT_FALSE(v.has_alpha());
-    long n = 0;
-    cv::Mat m;
-    ASSERT_TRUE(*v.next(n, m));
-    ASSERT_EQ(m.type(), CV_16UC4);
-    std::set<uint16_t> levels;
-    for (int x = 0; x < m.cols; ++x) levels.insert(m.ptr<uint16_t>(4)[x * 4 + 1]);
-    EXPECT_GT(levels.size(), 600u) << "green levels along the ramp";
+TEST(FfmpegVideo, TenAndTwelveBitSourcesAreReadAtTheirDepth) {
+    // A luma ramp of 10- or 12-bit codes across 1024 columns, lossless (FFV1): more than 256
+    // levels survive, which no 8-bit path could give.
+    Dir d("deep");
+    for (int bits : {10, 12}) {
+        const std::string fmt = "yuv444p" + std::to_string(bits) + "le";
+        const std::string f = d.file("ramp" + std::to_string(bits) + ".mkv");
+        const std::string lum = bits == 10 ? "X" : "X*4";
+        const std::string mid = bits == 10 ? "512" : "2048";
+        make_video(f, "-f lavfi -i nullsrc=s=1024x8:r=24 -frames:v 2 -vf \"format=" + fmt + ",geq=lum='" + lum + "':cb=" +
+                          mid + ":cr=" + mid + "\" -c:v ffv1 -pix_fmt " + fmt);
+        video::FfmpegVideo v;
+        ASSERT_TRUE(v.open(f).ok());
+        EXPECT_TRUE(v.deep());
+        EXPECT_EQ(v.bit_depth(), bits);
+        EXPECT_FALSE(v.has_alpha());
+        long n = 0;
+        cv::Mat m;
+        ASSERT_TRUE(*v.next(n, m));
+        ASSERT_EQ(m.type(), CV_16UC4);
+        std::set<uint16_t> levels;
+        for (int x = 0; x < m.cols; ++x) levels.insert(m.ptr<uint16_t>(4)[x * 4 + 1]);
+        EXPECT_GT(levels.size(), 600u) << bits << "-bit: green levels along the ramp";
+    }
 }
 
 TEST(FfmpegVideo, AlphaContainersGiveTheirAlpha) {
