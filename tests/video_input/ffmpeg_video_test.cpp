@@ -263,6 +263,17 @@ TEST(FfmpegVideo, DamagedFilesGiveAnErrorNamingThem) {
         ASSERT_FALSE(n.ok()) << f;
         EXPECT_NE(n.error().message.find(f), std::string::npos) << n.error().message;
     }
+    // A header that claims a picture over the size limit (40000 wide) is refused before any
+    // picture is allocated.
+    const std::string wide = d.file("wide.y4m");
+    std::ofstream(wide) << "YUV4MPEG2 W40000 H100 F24:1 Ip A1:1 C420jpeg\nFRAME\n" << std::string(1000, '\x80');
+    {
+        video::FfmpegVideo v;
+        Status st = v.open(wide);
+        ASSERT_FALSE(st.ok());
+        EXPECT_NE(st.error().message.find(wide + ": the video is 40000x100, over the size limit"), std::string::npos)
+            << st.error().message;
+    }
     // A Matroska file cut short still decodes what it holds, and says it ends early.
     const std::string mkv = d.file("short.mkv");
     make_video(mkv, "-f lavfi -i testsrc2=s=96x64:r=24 -frames:v 48 -c:v libx264 -g 12 -pix_fmt yuv420p");

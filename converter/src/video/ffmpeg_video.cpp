@@ -53,6 +53,9 @@ Status open_demux(const std::string& path, Demux& d) {
 
 int64_t packet_time(const AVPacket* p) { return p->pts; }
 
+constexpr int kMaxSide = 32768;
+constexpr int64_t kMaxPixels = int64_t(1) << 28;
+
 }  // namespace
 
 struct FfmpegVideo::Impl {
@@ -165,6 +168,7 @@ struct FfmpegVideo::Impl {
         }
         width = st->codecpar->width;
         height = st->codecpar->height;
+        if (Status sz = check_size(width, height); !sz) return sz;
         if (rotation == 90 || rotation == 270) std::swap(width, height);
         return {};
     }
@@ -272,8 +276,20 @@ struct FfmpegVideo::Impl {
         }
     }
 
+    // Checked before any picture is allocated: a header that lies about its size must not make
+    // spt ask for gigabytes (the image readers' limits, io/scene_image.hpp).
+    Status check_size(int w, int h) const {
+        if (w <= 0 || h <= 0) return make_error(Code::Corrupt, path + ": the video stream has no picture size");
+        if (w > kMaxSide || h > kMaxSide || int64_t(w) * h > kMaxPixels)
+            return make_error(Code::LimitExceeded, path + ": the video is " + std::to_string(w) + "x" + std::to_string(h) +
+                                                       ", over the size limit (" + std::to_string(kMaxSide) +
+                                                       " per side, " + std::to_string(kMaxPixels) + " pixels)");
+        return {};
+    }
+
     Status convert(cv::Mat& out) {
         const int w = frame->width, h = frame->height;
+        if (Status sz = check_size(w, h); !sz) return sz;
         const AVPixFmtDescriptor* pd = av_pix_fmt_desc_get(AVPixelFormat(frame->format));
         const bool rgb = pd && (pd->flags & AV_PIX_FMT_FLAG_RGB);
         // 8-bit RGB with alpha (PNG in MOV) converts to RGBA as it is, then widens exactly (x 257):
