@@ -11,6 +11,7 @@
 
 #include "cartoon/cartoon_paint.hpp"
 #include "cartoon/inter_frame.hpp"
+#include "cartoon/memory_bound.hpp"
 #include "cartoon/retrace_outline.hpp"
 #include "paint/rate_control.hpp"
 #include "paint/worker_pool.hpp"
@@ -195,6 +196,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
         return make_error(Code::IoError, why.empty() ? source.describe() + ": no frames to paint" : why);
     }
     const uint32_t W = frame.image.width, H = frame.image.height;
+    if (Status m = check_memory(source.describe(), W, H, kSequenceBytesPerPixel, opts.max_memory); !m) return m;
 
     paint::PaintSetup setup = paint::make_setup(W, H, opts.background, paint::default_sets(W, H, opts.sets),
                                                 opts.templates.empty() ? paint::default_templates() : opts.templates);

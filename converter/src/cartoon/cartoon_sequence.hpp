@@ -30,6 +30,8 @@ struct SequenceOptions {
     // false when `output` is a rate search's trial file (io/trial_output.hpp), written in place
     bool atomic_rename = true;
     FillOptions fill;
+    // Inputs whose frames need more (memory_bound.hpp) are refused before they are painted; 0: not.
+    uint64_t max_memory = 0;
     // A key frame short of its target also tries outlines smoothed by kShortKeySmooth
     // (cartoon_sequence.cpp); false when the caller chose fill.trace.smooth.
     bool smooth_short_keys = true;

@@ -254,21 +254,32 @@ std::vector<PolygonStroke> trace_region(const cv::Mat& rgb, const Regions& regs,
     cv::Mat padded;
     cv::copyMakeBorder(share, padded, pad, pad, pad, pad, cv::BORDER_REPLICATE);
     const int k = std::max(1, opts.upsample);
-    cv::Mat up;
-    cv::resize(padded, up, cv::Size(padded.cols * k, padded.rows * k), 0, 0, cv::INTER_LINEAR);
     // Each pixel gets exactly its share of the k x k sub-pixels: the ones where the smooth
     // field is highest. Thresholding the field at one half would lose lines thinner than a
     // pixel (two neighbours at half coverage); counting keeps their width and position.
-    cv::Mat bin(up.size(), CV_8U, cv::Scalar(0));
+    cv::Mat bin(padded.rows * k, padded.cols * k, CV_8U, cv::Scalar(0));
     std::vector<std::pair<float, int>> sub(size_t(k * k));
-    for (int y = 0; y < padded.rows; ++y)
-        for (int x = 0; x < padded.cols; ++x) {
-            const int n = int(std::lround(double(padded.at<float>(y, x)) * k * k));
-            if (n <= 0) continue;
-            for (int j = 0; j < k * k; ++j) sub[size_t(j)] = {-up.at<float>(y * k + j / k, x * k + j % k), j};
-            if (n < k * k) std::sort(sub.begin(), sub.end());
-            for (int j = 0; j < n; ++j) bin.at<uint8_t>(y * k + sub[size_t(j)].second / k, x * k + sub[size_t(j)].second % k) = 255;
-        }
+    // The bilinear field upsampled a band of rows at a time: whole, it would take 4 k^2 bytes
+    // a pixel (256 at k = 8) for the largest region. A band resized with one row of context
+    // each way gives the same values as the whole image does (output row y k + r reads source
+    // rows y - 1 .. y + 1, and with k a power of two its weights are exact either way).
+    const bool pow2 = (k & (k - 1)) == 0;
+    const int band = pow2 ? 16 : padded.rows;
+    cv::Mat up;
+    for (int y0 = 0; y0 < padded.rows; y0 += band) {
+        const int y1 = std::min(padded.rows, y0 + band);
+        const int s0 = std::max(0, y0 - 1), s1 = std::min(padded.rows, y1 + 1);
+        cv::resize(padded.rowRange(s0, s1), up, cv::Size(padded.cols * k, (s1 - s0) * k), 0, 0, cv::INTER_LINEAR);
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < padded.cols; ++x) {
+                const int n = int(std::lround(double(padded.at<float>(y, x)) * k * k));
+                if (n <= 0) continue;
+                for (int j = 0; j < k * k; ++j) sub[size_t(j)] = {-up.at<float>((y - s0) * k + j / k, x * k + j % k), j};
+                if (n < k * k) std::sort(sub.begin(), sub.end());
+                for (int j = 0; j < n; ++j) bin.at<uint8_t>(y * k + sub[size_t(j)].second / k, x * k + sub[size_t(j)].second % k) = 255;
+            }
+    }
+    up.release();
 
     // Outlines with their holes. A hole over pixels of a region drawn earlier must stay open
     // (a ring whose line breaks in the source traces closed, and its fill would cover what it

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "cartoon/memory_bound.hpp"
 #include "io/image_io.hpp"
 #include "io/template_loader.hpp"
 #include "io/trial_output.hpp"
@@ -287,6 +288,7 @@ Result<cartoon::SequenceOptions> sequence_options(const PaintJob& o) {
     s.background = o.background;
     s.stored = o.stored;
     s.fill = fill_options(o);
+    s.max_memory = o.max_memory;
     s.smooth_short_keys = o.outline_smooth < 0;  // --outline-smooth: that smoothing, every frame
     // Sequences trace on 4x4 sub-pixels: with 8x8 the butterfly clip (frames 0-23, 36 dB)
     // took 580 KB instead of 469 KB (fewer still outlines matched frame to frame).
@@ -314,6 +316,7 @@ Result<CartoonStill> paint_cartoon_still(const PaintJob& o) {
     auto img = io::read_image(o.input, ro);
     if (!img) return img.error();
     const uint32_t W = img->width, H = img->height;
+    if (Status m = cartoon::check_memory(o.input, W, H, cartoon::kStillBytesPerPixel, o.max_memory); !m) return m.error();
     auto templates = paint_templates(o.templates_dir);
     if (!templates) return templates.error();
     std::vector<StrokeSet> sets = o.set_sizes.empty() ? paint::default_sets(W, H, o.sets) : o.set_sizes;

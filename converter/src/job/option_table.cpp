@@ -254,6 +254,15 @@ Rows cartoon_rows() {
             .set([](PaintJob& j, const std::string&) { j.lines = false; return std::string(); })
             .get([](const PaintJob& j) { return j.lines ? none() : one("true"); })
             .canon(14, [](std::ostream& s, const PaintJob& j) { if (cartoon(j)) s << " lines=" << (j.lines ? 1 : 0); }),
+        Row("max-memory", "BYTES", OptionKind::Text,
+            "--style cartoon: refuse, before painting, an input that would take more memory than this (N, or N with "
+            "K, M or G: binary units; 0: no bound). The painter takes about 192 bytes a pixel for a still, 128 for a "
+            "sequence (SECURITY.md)")
+            .def("8G").styles(kCartoonOnly)
+            .set([](PaintJob& j, const std::string& v) {
+                return parse_byte_size(v, j.max_memory) ? "" : "expected a byte count (N, NK, NM or NG)";
+            })
+            .get([](const PaintJob& j) { return j.max_memory != PaintJob{}.max_memory ? one(byte_size_text(j.max_memory)) : none(); }),
     };
     for (Row& b : rows) t.push_back(std::move(b.r));
     return t;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 namespace spt::job {
 
@@ -79,6 +80,26 @@ bool parse_rgb(const std::string& s, Rgb8& c) {
         if (!parse_long(p[size_t(i)], 0, 255, v[i])) return false;
     c = Rgb8{uint8_t(v[0]), uint8_t(v[1]), uint8_t(v[2])};
     return true;
+}
+
+bool parse_byte_size(const std::string& s, uint64_t& bytes) {
+    std::string num = s;
+    int shift = 0;
+    if (!num.empty()) {
+        const char unit = num.back();
+        shift = unit == 'K' || unit == 'k' ? 10 : unit == 'M' || unit == 'm' ? 20 : unit == 'G' || unit == 'g' ? 30 : 0;
+        if (shift > 0) num.pop_back();
+    }
+    uint64_t n = 0;
+    if (!parse_u64(num, n) || n > (~uint64_t(0) >> shift)) return false;
+    bytes = n << shift;
+    return true;
+}
+
+std::string byte_size_text(uint64_t bytes) {
+    for (auto [shift, unit] : {std::pair{30, "G"}, {20, "M"}, {10, "K"}})
+        if (bytes != 0 && bytes % (uint64_t(1) << shift) == 0) return std::to_string(bytes >> shift) + unit;
+    return std::to_string(bytes);
 }
 
 bool parse_target_bytes(const std::string& s, uint64_t& bytes, bool& per_second) {

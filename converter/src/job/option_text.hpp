@@ -17,8 +17,10 @@ bool parse_double(const std::string& s, double lo, double hi, double& v);  // fi
 bool parse_set_sizes(const std::string& s, std::vector<StrokeSet>& out);   // WxH,WxH,...
 bool parse_rect(const std::string& s, paint::Rect& r);                     // x,y,w,h
 bool parse_rgb(const std::string& s, Rgb8& c);                             // R,G,B
+bool parse_byte_size(const std::string& s, uint64_t& bytes);  // N, NK, NM or NG (binary units)
 bool parse_target_bytes(const std::string& s, uint64_t& bytes, bool& per_second);  // N or N/s, N >= 64
 
+std::string byte_size_text(uint64_t bytes);  // as parse_byte_size reads it: 8G, 512M, 1000
 std::string exact(double v);  // the shortest text strtod reads back to v
 std::string set_sizes_text(const std::vector<StrokeSet>& sizes);
 std::string rect_text(const paint::Rect& r);

@@ -38,6 +38,7 @@ struct PaintJob {
     int min_region = 0;                   // --min-region PX (cartoon): 0 = the default
     double min_color_share = 0;           // --min-color-share F (cartoon): 0 = the default
     bool lines = true;                    // cartoon: thin regions may be curves (--no-lines: not)
+    uint64_t max_memory = 8ull << 30;     // --max-memory BYTES (cartoon): larger inputs refused; 0 = no bound
     paint::PaintOptions paint;            // seed, threads, limits, threshold, orient, lambda, ...
     int sets = 6;                         // --sets, when --set-sizes is not given
     std::vector<StrokeSet> set_sizes;     // --set-sizes WxH,WxH,... (coarse to fine)
