@@ -217,6 +217,13 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
                   paint::stop_reason_name(sp->stats.stop));
     progress.finish(true, sp->stats.strokes, sp->stats.psnr, detail);
     if (o.progress != io::ProgressMode::Json) std::fprintf(stderr, "spt paint: %s: %s\n", o.output.c_str(), detail);
+    // A mostly translucent input: the stamps cannot paint it (scene_paint.hpp), said rather than
+    // reported as converged. A quarter: a soft matte's edge is far less.
+    if (const double share = target.alpha ? paint::partial_alpha_share(view) : 0; share >= 0.25)
+        std::fprintf(stderr, "spt paint: warning: %s: %.0f%% of its pixels are partly transparent; stamps composite "
+                             "over and only raise alpha, so the default painter cannot paint inside them (%.2f dB): "
+                             "--style cartoon paints them as one layer of polygons, --alpha off over --background\n",
+                     o.input.c_str(), 100 * share, sp->stats.psnr);
     return 0;
 }
 

@@ -11,6 +11,17 @@ bool has_transparency(const LinearView& img) {
     return false;
 }
 
+double partial_alpha_share(const LinearView& img) {
+    const size_t n = size_t(img.width) * img.height;
+    if (n == 0) return 0;
+    size_t partial = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const float a = img.rgba[4 * i + 3];
+        partial += a >= 16.f / 255.f && a <= 239.f / 255.f;
+    }
+    return double(partial) / double(n);
+}
+
 Header scene_header(const Header& plain, const SceneTarget& target) {
     Header h = plain;
     h.alpha = target.alpha;

@@ -35,6 +35,12 @@ Result<ScenePainting> paint_scene(const LinearView& img, const PaintSetup& setup
 // PNG of an opaque picture) asks for no alpha canvas under "--alpha auto".
 bool has_transparency(const LinearView& img);
 
+// The share of pixels that are partly transparent (alpha 16/255 .. 239/255: not an edge's
+// few pixels nor a matte's). Stamps composite over (SPEC.md 8.6) and only ever raise alpha, so
+// the stamp painter cannot put detail inside such an area without making it more opaque than
+// the source: every stroke it could add costs more alpha error than it gains in colour.
+double partial_alpha_share(const LinearView& img);
+
 // The header a SceneTarget gives a plain setup header (background converted for linear files).
 Header scene_header(const Header& plain, const SceneTarget& target);
 
