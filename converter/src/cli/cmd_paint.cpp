@@ -107,10 +107,11 @@ int paint_still(const PaintCommandOptions& o) {
     const uint64_t bytes = painted->bytes;
 
     if (!o.preview.empty()) {
-        if (Status p = io::write_image(o.preview, canvas); !p) return fail(p.error().message);
+        if (Status p = io::write_image(o.preview, canvas); !p) return extra_output_failed("--preview", o.output, p.error().message);
     }
     if (!o.side_by_side.empty()) {
-        if (Status p = write_side_by_side(o.side_by_side, *img, canvas); !p) return fail(p.error().message);
+        if (Status p = write_side_by_side(o.side_by_side, *img, canvas); !p)
+            return extra_output_failed("--side-by-side", o.output, p.error().message);
     }
     char detail[256];
     std::snprintf(detail, sizeof detail, "%llu strokes, %.2f dB PSNR, %llu bytes (%.2f bytes/stroke), %.2f s, stopped: %s",

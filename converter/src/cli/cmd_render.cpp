@@ -62,7 +62,9 @@ public:
         }
         out_ = std::move(*p);  // the container is named by the extension, kept by file()
         if (Status s = writer_.open(out_.file(), lower_ext(path), path, fps > 0 ? fps : 24.0, w, h); !s) {
-            err = s.error().message;
+            // A full disk is the commonest reason, and named as such.
+            const Status space = out_.check_space();
+            err = space ? s.error().message : space.error().message;
             discard();
             return false;
         }
@@ -79,6 +81,12 @@ public:
         if (Status s = writer_.finish(); !s) {
             err = s.error().message;
             discard();
+            return false;
+        }
+        // A full disk is found here too, whatever the encoder said.
+        if (Status s = out_.check_space(); !s) {
+            err = s.error().message + " (the video was not finished; nothing was written)";
+            out_.discard();
             return false;
         }
         if (Status s = out_.commit(); !s) {

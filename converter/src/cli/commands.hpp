@@ -10,6 +10,9 @@ namespace spt::cli {
 // Prints "spt COMMAND: MESSAGE" on stderr and returns 1, the exit status of failed work: the one
 // form every command's errors take.
 int command_failed(const char* command, const std::string& message);
+// A picture beside the painting (`option`: --preview, --side-by-side) failed after `painting`
+// was written: said with the message, and that the painting is complete; returns 1.
+int extra_output_failed(const char* option, const std::string& painting, const std::string& message);
 
 int cmd_info(int argc, char** argv);
 int cmd_verify(int argc, char** argv);

@@ -144,17 +144,33 @@ int export_web(const std::string& in, const std::string& out, bool folder) {
 
     std::error_code ec;
     if (fs::exists(out, ec) && !fs::is_directory(out, ec)) return fail(out + ": exists and is not a folder (--web writes a folder)");
+    const bool made_folder = !fs::exists(out, ec);
     fs::create_directories(out, ec);
     if (ec) return fail(out + ": cannot create the folder: " + ec.message());
     std::string clip_name = fs::path(in).filename().string();
     for (const auto& a : web::player_assets())
         if (clip_name == a.name || clip_name == "index.html") clip_name = "clip.spt";  // never over a player file
+    // A failure (a full disk) takes back what this run made: the files that were not there
+    // before, and the folder if it made it, so that no half site is left to be served.
+    std::vector<std::string> made;
+    auto put = [&](const std::string& name, const std::string& bytes) -> Status {
+        const std::string path = (fs::path(out) / name).string();
+        std::error_code e;
+        const bool existed = fs::exists(fs::symlink_status(path, e));
+        Status s = import::write_file_atomic(path, bytes);
+        if (s && !existed) made.push_back(path);
+        return s;
+    };
+    auto undo = [&](const std::string& msg) {
+        std::error_code e;
+        for (const std::string& p : made) fs::remove(p, e);
+        if (made_folder) fs::remove(out, e);  // only if empty: nothing of anyone else's goes
+        return fail(msg + (made_folder ? "; " + out + " was removed" : "; the files this run added to " + out + " were removed"));
+    };
     for (const auto& a : web::player_assets())
-        if (Status s = import::write_file_atomic((fs::path(out) / a.name).string(), std::string(a.bytes)); !s)
-            return fail(s.error().message);
-    if (Status s = import::write_file_atomic((fs::path(out) / clip_name).string(), clip); !s) return fail(s.error().message);
-    if (Status s = import::write_file_atomic((fs::path(out) / "index.html").string(), hosted_page(title, clip_name)); !s)
-        return fail(s.error().message);
+        if (Status s = put(std::string(a.name), std::string(a.bytes)); !s) return undo(s.error().message);
+    if (Status s = put(clip_name, clip); !s) return undo(s.error().message);
+    if (Status s = put("index.html", hosted_page(title, clip_name)); !s) return undo(s.error().message);
     return 0;
 }
 

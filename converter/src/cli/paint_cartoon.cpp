@@ -29,7 +29,7 @@ int report_cartoon_still(const PaintCommandOptions& o) {
     auto r = job::paint_cartoon_still(o);
     if (!r) return fail(r.error().message);
     if (!o.preview.empty())
-        if (Status p = io::write_image(o.preview, r->canvas); !p) return fail(p.error().message);
+        if (Status p = io::write_image(o.preview, r->canvas); !p) return extra_output_failed("--preview", o.output, p.error().message);
     if (r->used_default) {
         // Said whatever the progress mode: the file is not what the user asked for.
         std::fprintf(stderr, "spt paint: --style cartoon: the default painter paints %s in fewer bytes at --target-psnr %.2f "

@@ -196,7 +196,8 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
     if (!o.preview.empty() || !o.side_by_side.empty()) {
         const std::vector<uint8_t> painted = painting_view(sp->canvas, sp->header, o.background);
         if (!o.preview.empty())
-            if (Status p = io::write_image(o.preview, W, H, painted.data()); !p) return fail(p.error().message);
+            if (Status p = io::write_image(o.preview, W, H, painted.data()); !p)
+                return extra_output_failed("--preview", o.output, p.error().message);
         if (!o.side_by_side.empty()) {
             const std::vector<uint8_t> src = source_view(img, o.background);
             std::vector<uint8_t> both(size_t(2) * W * H * 3);
@@ -204,7 +205,8 @@ int paint_scene_still(const PaintCommandOptions& o, const io::SceneImage& img, c
                 std::copy_n(src.data() + size_t(y) * W * 3, size_t(W) * 3, both.data() + size_t(y) * 2 * W * 3);
                 std::copy_n(painted.data() + size_t(y) * W * 3, size_t(W) * 3, both.data() + (size_t(y) * 2 * W + W) * 3);
             }
-            if (Status p = io::write_image(o.side_by_side, 2 * W, H, both.data()); !p) return fail(p.error().message);
+            if (Status p = io::write_image(o.side_by_side, 2 * W, H, both.data()); !p)
+                return extra_output_failed("--side-by-side", o.output, p.error().message);
         }
     }
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

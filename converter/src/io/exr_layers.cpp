@@ -98,10 +98,18 @@ Result<ChannelPick> pick_channels(const std::vector<ImagePart>& parts, const std
     bool layered = false;
     for (const std::string& c : p.channels) layered = layered || c.find('.') != std::string::npos;
     ChannelPick pick;
+    std::string names;
+    for (const std::string& c : p.channels) names += (names.empty() ? "" : ", ") + c;
     if (n <= 2) {
         pick.gray = true;
         pick.color[0] = pick.color[1] = pick.color[2] = 0;
         if (n == 2) pick.alpha = 1;
+        // A grey image names its channels Y (and A); anything else is not one (a depth pass,
+        // a matte, two colour channels) and is painted as grey only by position: said.
+        const bool grey = p.channels[0] == "Y" && (n == 1 || p.channels[1] == "A");
+        if (!grey)
+            pick.warning = "has no R, G, B channels (channels: " + names + "): painted as grey from " + p.channels[0] +
+                           (n == 2 ? " with " + p.channels[1] + " as alpha" : "");
         return pick;
     }
     if (layered)
@@ -109,6 +117,8 @@ Result<ChannelPick> pick_channels(const std::vector<ImagePart>& parts, const std
                                                  "): name the layer to paint with --layer");
     if (p.alpha_channel >= 3) pick.alpha = p.alpha_channel;
     else if (n == 4 && p.alpha_channel < 0) pick.alpha = 3;
+    pick.warning = "has no R, G, B channels (channels: " + names + "): painted as R, G, B from " + p.channels[0] + ", " +
+                   p.channels[1] + ", " + p.channels[2] + (pick.alpha >= 0 ? " with " + p.channels[size_t(pick.alpha)] + " as alpha" : "");
     return pick;
 }
 

@@ -22,6 +22,9 @@ struct ChannelPick {
     int alpha = -1;            // -1: none
     bool gray = false;
     std::string layer;         // "" for the unnamed layer
+    // Set when channels were taken by position from a file whose names say they are not a
+    // picture's (only Z, only A, R and G): what was painted from what, for a warning.
+    std::string warning;
 };
 
 // The layer of a channel name (before the last '.') and its own name (after it). Channels of a

@@ -106,6 +106,16 @@ Result<Image> read_image(const std::string& path, const ReadOptions& opts) {
                                   ", over the size limit (" + std::to_string(opts.max_side) +
                                   " per side, " + std::to_string(opts.max_pixels) + " pixels)",
                         Code::LimitExceeded);
+    // A display window is the picture's frame (EXR, TIFF): one over the limits is refused here
+    // as the scene reader refuses it, not painted as its data window alone.
+    if (spec.full_width > 0 && spec.full_height > 0 &&
+        (spec.full_width != w || spec.full_height != h || spec.full_x != spec.x || spec.full_y != spec.y) &&
+        (spec.full_width > opts.max_side || spec.full_height > opts.max_side ||
+         uint64_t(spec.full_width) * uint64_t(spec.full_height) > opts.max_pixels))
+        return io_error(path, "has a display window of " + std::to_string(spec.full_width) + "x" +
+                                  std::to_string(spec.full_height) + ", over the size limit (" + std::to_string(opts.max_side) +
+                                  " per side, " + std::to_string(opts.max_pixels) + " pixels)",
+                        Code::LimitExceeded);
     auto lay = channel_layout(path, spec);
     if (!lay) return lay.error();
     const Layout L = *lay;

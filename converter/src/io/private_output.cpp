@@ -1,6 +1,8 @@
 #include "io/private_output.hpp"
 
+#include <fcntl.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -35,6 +37,25 @@ Result<PrivateOutput> PrivateOutput::create(const std::string& path) {
     p.dir_ = templ;
     p.file_ = (fs::path(templ) / fs::path(path).filename()).string();
     return p;
+}
+
+Status PrivateOutput::check_space() const {
+    const std::string probe = (fs::path(dir_) / ".space").string();
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0) return make_error(Code::IoError, path_ + ": " + std::strerror(errno));
+    static const char zeros[65536] = {};
+    int err = 0;
+    size_t done = 0;
+    while (done < sizeof zeros && err == 0) {
+        const ssize_t n = ::write(fd, zeros + done, sizeof zeros - done);
+        if (n < 0) err = errno;
+        else done += size_t(n);
+    }
+    if (err == 0 && ::fsync(fd) != 0) err = errno;
+    ::close(fd);
+    ::unlink(probe.c_str());
+    if (err) return make_error(Code::IoError, path_ + ": " + std::strerror(err));
+    return {};
 }
 
 Status PrivateOutput::commit() {

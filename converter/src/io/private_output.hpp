@@ -22,6 +22,11 @@ public:
 
     // Where the writer writes: inside the private folder, with the destination's file name.
     const std::string& file() const { return file_; }
+    // Whether the folder's file system still takes 64 KiB (written and synced, then removed):
+    // a writer that reports no errors of its own (OpenCV's video writer) fails silently when
+    // the disk fills, and leaves less than its buffer free. The error names the destination
+    // and the system's reason ("No space left on device").
+    Status check_space() const;
     // Moves file() to the destination (replacing a symlink there, never following it).
     Status commit();
     void discard();

@@ -130,6 +130,7 @@ Result<SceneImage> read_scene_image(const std::string& path, const SceneReadOpti
 
     SceneImage img;
     img.warnings = std::move(config_warnings);
+    if (!pick->warning.empty()) img.warnings.push_back(path + ": " + pick->warning);
     img.width = uint32_t(display.w);
     img.height = uint32_t(display.h);
     img.has_alpha = pick->alpha >= 0;
