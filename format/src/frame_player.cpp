@@ -34,37 +34,49 @@ bool ReaderImpl::render_stamp_frame(size_t pos, Canvas& canvas, unsigned threads
     if (!ensure_renderer("", 0)) return false;
     // The renderer checks every stamp (ranges, footprint) and bounds the fill work of SPEC 10,
     // per frame and what is left of the file's budget (over it, the general path reports it).
-    const uint64_t limit = std::min(opts_.limits.max_fill_work, fill_budget() - std::min(fill_budget(), fill_spent_));
+    const uint64_t limit = std::min(opts_.limits.max_fill_work, fill_budget() - std::min(fill_budget(), spent_[kFillWork]));
     uint64_t work = 0;
     if (!detail::render_stamp_frame(*renderer_, canvas, stamps, threads, limit, &work)) return false;
-    fill_spent_ += work;  // the stamps' boxes unclipped: at least the work of SPEC 10
+    spent_[kFillWork] += work;  // the stamps' boxes unclipped: at least the work of SPEC 10
     paid_[pos] = true;
     return true;
 }
 
-uint64_t ReaderImpl::fill_budget() const {
+uint64_t ReaderImpl::work_budget(int kind) const {
     // base + per_byte x size, saturating (both are caller-set).
     const Limits& l = opts_.limits;
+    const uint64_t base = kind == kFillWork ? l.max_file_fill_work : kind == kPolygonWork ? l.max_file_polygon_work : l.max_file_curve_work;
+    const uint64_t rate = kind == kFillWork      ? l.max_fill_work_per_byte
+                          : kind == kPolygonWork ? l.max_polygon_work_per_byte
+                                                 : l.max_curve_work_per_byte;
     const uint64_t size = file_size();
-    if (l.max_fill_work_per_byte && size > (UINT64_MAX - l.max_file_fill_work) / l.max_fill_work_per_byte) return UINT64_MAX;
-    return l.max_file_fill_work + l.max_fill_work_per_byte * size;
+    if (rate && size > (UINT64_MAX - base) / rate) return UINT64_MAX;
+    return base + rate * size;
 }
 
 Status ReaderImpl::pay_fill_work(size_t change, const std::vector<Stroke>& live) {
     if (paid_[change]) return {};  // this live list was paid for when first drawn
-    uint64_t work = 0;
-    for (const Stroke& s : live) work += fill_render_work(s, info_.header, info_.templates);  // < 2^24 x 2^63 / 2^24
-    const uint64_t budget = fill_budget();
-    if (work > budget || fill_spent_ > budget - work) {
+    // Each sum stays below 2^64: at most 2^24 strokes, each kind's work bounded per stroke.
+    uint64_t work[3] = {0, 0, 0};
+    for (const Stroke& s : live) {
+        if (s.kind == StrokeKind::Polygon) work[kPolygonWork] += polygon_render_work(s.polygon, info_.header.height);
+        else if (s.kind == StrokeKind::Curve) work[kCurveWork] += curve_render_work(s.curve, info_.header.width, info_.header.height);
+        else work[kFillWork] += fill_render_work(s, info_.header, info_.templates);
+    }
+    static const char* const what[3] = {"stamps and affine strokes", "polygons", "curves"};
+    static const char* const unit[3] = {"box pixels x samples", "edges x rows x samples", "segment box pixels"};
+    for (int k = 0; k < 3; ++k) {
+        const uint64_t budget = work_budget(k);
+        if (work[k] <= budget && spent_[k] <= budget - work[k]) continue;
         const FrameEntry& e = frames_[change];
         return make_error(Code::LimitExceeded,
-                          frame_where(e.index, e.offset) + ": rendering it would take the file's stamps and affine strokes past " +
-                              std::to_string(budget) + " units of rendering work (box pixels x samples; " +
-                              std::to_string(fill_spent_) + " spent on the frames drawn before, " + std::to_string(work) +
+                          frame_where(e.index, e.offset) + ": rendering it would take the file's " + what[k] + " past " +
+                              std::to_string(budget) + " units of rendering work (" + unit[k] + "; " +
+                              std::to_string(spent_[k]) + " spent on the frames drawn before, " + std::to_string(work[k]) +
                               " for this one), the limit for a file of " + std::to_string(file_size()) + " bytes",
                           e.offset);
     }
-    fill_spent_ += work;
+    for (int k = 0; k < 3; ++k) spent_[k] += work[k];
     paid_[change] = true;
     return {};
 }

@@ -90,7 +90,10 @@ private:
     // The file's fill-work budget (Limits::max_file_fill_work + max_fill_work_per_byte per byte
     // of the file), and its charge for drawing the live list of change frame `change`: each
     // distinct live list is paid for once, however often it is drawn.
-    uint64_t fill_budget() const;
+    // Polygons and curves likewise, each kind against its own budget (Limits).
+    enum WorkKind { kFillWork = 0, kPolygonWork = 1, kCurveWork = 2 };
+    uint64_t work_budget(int kind) const;
+    uint64_t fill_budget() const { return work_budget(kFillWork); }
     Status pay_fill_work(size_t change, const std::vector<Stroke>& live);
     // Decodes frame `pos` into f, reusing f's memory (and the reader's chunk buffer).
     Status decode(size_t pos, FieldStats* stats, Frame& f);
@@ -119,7 +122,7 @@ private:
     const Canvas* shown_canvas_ = nullptr;
     uint64_t shown_sum_ = 0;
     // The fill work of the live lists drawn so far, and which change frames they were.
-    uint64_t fill_spent_ = 0;
+    uint64_t spent_[3] = {0, 0, 0};  // by WorkKind
     std::vector<bool> paid_;
     std::unique_ptr<Renderer> renderer_;  // coding 2 frames render while they decode
     // A frame chunk's payload buffer kept between decodes, so that reading frame after frame

@@ -92,3 +92,63 @@ TEST(HostileRenderWork, AFileOverItsFillBudgetIsRefusedBeforeItIsDrawn) {
     EXPECT_LT(s, 5.0);
     EXPECT_FALSE(fs::exists(d.file("f0000.png")));
 }
+
+namespace {
+
+// One key frame of `n` canvas-tall quadrilaterals on a 1024x1024 canvas sampled 16 x 16 (2 edges
+// x 1024 rows x 256 samples: 2^19 units of polygon work each), then 29 empty inter frames.
+std::string polygon_file(const TempDir& d, const std::string& name, int n) {
+    spt::StreamInfo info;
+    info.header.width = info.header.height = 1024;
+    info.header.sets = {{4, 4}};
+    info.header.orientations = spt::default_orientations(1);
+    info.header.fps = {24, 1};
+    info.templates.resize(1);
+    info.templates[0].kind = spt::TemplateKind::Ellipse;
+    spt::WriterOptions o;
+    o.coding = spt::Coding::Range;
+    const std::string path = d.file(name);
+    auto w = spt::Writer::create(path, info, o);
+    EXPECT_TRUE(w.ok());
+    spt::Frame key;
+    for (int i = 0; i < n; ++i) {
+        spt::PolygonStroke p;
+        p.color = {uint8_t(i * 37), uint8_t(i * 11), 200, 128};
+        p.supersample = 16;
+        const int32_t x = 16 * (i % 1000), s = 16 * 1024;
+        p.points = {{x, 0}, {x + 16 * 20, 0}, {x + 16 * 20, s}, {x, s}};
+        key.added.push_back(spt::Stroke::make_polygon(p));
+    }
+    EXPECT_TRUE((*w)->append(key).ok());
+    for (uint32_t i = 1; i < 30; ++i) {
+        spt::Frame f;
+        f.index = i;
+        f.type = spt::FrameType::Inter;
+        EXPECT_TRUE((*w)->append(f).ok());
+    }
+    EXPECT_TRUE((*w)->finish().ok());
+    return path;
+}
+
+}  // namespace
+
+// Polygons at 94% of the per-frame limit (480 x 2^19 units, 2^27.9) in a few KB took about 19 s
+// a frame; the file's polygon budget (2^26 + 2^12 a byte) refuses it before it is drawn.
+// 100 of them (2^25.6, within the base) still verify.
+TEST(HostileRenderWork, AFileOverItsPolygonBudgetIsRefusedBeforeItIsDrawn) {
+    REQUIRE_TOOL();
+    TempDir d;
+    const std::string in = polygon_file(d, "poly.spt", 480);
+    std::printf("%s: %llu bytes\n", in.c_str(), (unsigned long long)fs::file_size(in));
+    double s = 0;
+    auto r = timed(d, {"verify", in}, &s);
+    EXPECT_TRUE(failed_with(r, 1, {in + ": frame 0 (FRAM chunk at byte offset ", "the file's polygons past",
+                                   "the limit for a file of"}));
+    EXPECT_LT(s, 5.0);
+    r = timed(d, {"render", in, "-o", d.file("f####.png")}, &s);
+    EXPECT_TRUE(failed_with(r, 1, {"the file's polygons past", "wrote 0 of 30 frames"}));
+    EXPECT_LT(s, 5.0);
+    const std::string ok = polygon_file(d, "fewer.spt", 100);
+    r = timed(d, {"verify", ok}, &s);
+    EXPECT_EQ(r.code, 0) << r.err;
+}

@@ -41,6 +41,15 @@ struct Limits {
     // 12-frame 480x270 video: 2^27 in 3.6 KB, 2^15.4 a byte; stills need at most 2^12.5).
     uint64_t max_file_fill_work = 1ull << 30;
     uint64_t max_fill_work_per_byte = 1ull << 18;
+    // The same for polygons and curves (their units as max_polygon_work's and max_curve_work's):
+    // 2^26 of polygon work and 2^31 of curve work are a few seconds of one core. The densest
+    // cartoon paintings measured (the shared stills and the star's 12 frames, every frame's live
+    // list counted) need at most 2^10.5 polygon units and 2^8.6 curve units a byte of their
+    // file: 2^12 a byte is 3x and 10x above them.
+    uint64_t max_file_polygon_work = 1ull << 26;
+    uint64_t max_polygon_work_per_byte = 1ull << 12;
+    uint64_t max_file_curve_work = 1ull << 31;
+    uint64_t max_curve_work_per_byte = 1ull << 12;
     uint32_t max_metadata_bytes = 1u << 24;
     uint32_t max_frames = 0xFFFFFFFEu;
 };
