@@ -97,7 +97,7 @@ namespace {
 
 // One key frame of `n` canvas-tall quadrilaterals on a 1024x1024 canvas sampled 16 x 16 (2 edges
 // x 1024 rows x 256 samples: 2^19 units of polygon work each), then 29 empty inter frames.
-std::string polygon_file(const TempDir& d, const std::string& name, int n) {
+std::string polygon_file(const TempDir& d, const std::string& name, int n, bool curves = false) {
     spt::StreamInfo info;
     info.header.width = info.header.height = 1024;
     info.header.sets = {{4, 4}};
@@ -111,7 +111,14 @@ std::string polygon_file(const TempDir& d, const std::string& name, int n) {
     auto w = spt::Writer::create(path, info, o);
     EXPECT_TRUE(w.ok());
     spt::Frame key;
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < n && curves; ++i) {
+        // 63 segments from corner to corner: each one's box is the canvas (2^20 units).
+        spt::CurveStroke c;
+        c.color = {uint8_t(i * 37), uint8_t(i * 11), 200, 128};
+        for (int k = 0; k < 64; ++k) c.points.push_back({k % 2 ? 16 * 1023 : 0, k % 2 ? 16 * 1023 : 0, 16});
+        key.added.push_back(spt::Stroke::make_curve(c));
+    }
+    for (int i = 0; i < n && !curves; ++i) {
         spt::PolygonStroke p;
         p.color = {uint8_t(i * 37), uint8_t(i * 11), 200, 128};
         p.supersample = 16;
@@ -150,5 +157,21 @@ TEST(HostileRenderWork, AFileOverItsPolygonBudgetIsRefusedBeforeItIsDrawn) {
     EXPECT_LT(s, 5.0);
     const std::string ok = polygon_file(d, "fewer.spt", 100);
     r = timed(d, {"verify", ok}, &s);
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// Curves likewise: 60 curves of 63 canvas-sized segments (2^31.9 units of curve work, under the
+// per-frame 2^33) over the file's curve budget (2^31 + 2^12 a byte); 20 of them verify.
+TEST(HostileRenderWork, AFileOverItsCurveBudgetIsRefusedBeforeItIsDrawn) {
+    REQUIRE_TOOL();
+    TempDir d;
+    const std::string in = polygon_file(d, "curves.spt", 60, true);
+    std::printf("%s: %llu bytes\n", in.c_str(), (unsigned long long)fs::file_size(in));
+    double s = 0;
+    auto r = timed(d, {"verify", in}, &s);
+    EXPECT_TRUE(failed_with(r, 1, {in + ": frame 0 (FRAM chunk at byte offset ", "the file's curves past",
+                                   "the limit for a file of"}));
+    EXPECT_LT(s, 5.0);
+    r = timed(d, {"verify", polygon_file(d, "fewer.spt", 20, true)}, &s);
     EXPECT_EQ(r.code, 0) << r.err;
 }
