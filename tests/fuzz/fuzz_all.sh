@@ -1,6 +1,7 @@
 #!/bin/sh
 # Fuzzes every parser target for SECONDS each (default 60) with libFuzzer, ASan and UBSan (UB is
-# fatal), over instrumented builds of libspt, the importers and the converter's ROI parser, and
+# fatal), over instrumented builds of libspt, the importers and the converter's ROI, plan and
+# OCIO config readers, and
 # prints one line per target: executions, coverage (edges, features), corpus size and findings.
 #   tests/fuzz/fuzz_all.sh [seconds] [build_dir] [target...]
 # Environment: RUNS=N stops a target after N executions (whichever comes first with SECONDS);
@@ -24,7 +25,9 @@ json fuzz_importers/fuzz_importers_json fuzz_importers/corpus/json 65536 10
 geometrize fuzz_importers/fuzz_importers_geometrize fuzz_importers/corpus/geometrize 8192 10
 strokes fuzz/fuzz_strokes fuzz/corpus/strokes 4096 10
 svg fuzz_importers/fuzz_importers_svg fuzz_importers/corpus/svg 65536 10
-container fuzz/fuzz_container fuzz/corpus/container 32768 10"
+container fuzz/fuzz_container fuzz/corpus/container 32768 10
+plan fuzz/fuzz_plan fuzz/corpus/plan 65536 10
+ocio fuzz/fuzz_ocio fuzz/corpus/ocio 16384 10"
 
 mkdir -p "$build/findings"
 rm -f "$build/findings/.failed"
