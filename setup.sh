@@ -11,7 +11,7 @@ build="${SPT_BUILD_DIR:-build}"
 core_pkgs=(build-essential cmake ninja-build pkg-config git python3
            libopenimageio-dev openimageio-tools libopencv-dev libopenexr-dev
            libavformat-dev libavcodec-dev libswscale-dev libavutil-dev
-           libcli11-dev nlohmann-json3-dev libpugixml-dev libpng-dev zlib1g-dev libyaml-dev
+           libcli11-dev nlohmann-json3-dev libpugixml-dev libpng-dev zlib1g-dev libminizip-dev libyaml-dev
            help2man patchelf)           # the Debian package's man page; the relocatable bundle
 test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy ccache
            blender libegl1 libegl-mesa0 ffmpeg chromium inkscape xz-utils

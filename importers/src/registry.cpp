@@ -13,9 +13,10 @@ namespace spt::import {
 extern const Importer kStrokesJsonImporter;
 extern const Importer kGeometrizeJsonImporter;
 extern const Importer kSvgImporter;
+extern const Importer kLottieImporter;
 
 const std::vector<const Importer*>& importers() {
-    static const std::vector<const Importer*> list = {&kStrokesJsonImporter, &kGeometrizeJsonImporter, &kSvgImporter};
+    static const std::vector<const Importer*> list = {&kStrokesJsonImporter, &kGeometrizeJsonImporter, &kLottieImporter, &kSvgImporter};
     return list;
 }
 
@@ -131,7 +132,7 @@ Result<Document> import_path(const std::string& path, const std::string& from, c
         auto text = read_file(f, opts.max_file_bytes);
         if (!text) return text.error();
         const Importer* imp = forced ? forced : detect_importer(f, std::string_view(*text).substr(0, 4096));
-        if (!imp) return make_error(Code::Unsupported, f + ": format not recognised (use --from spt-json, geometrize-json or svg)");
+        if (!imp) return make_error(Code::Unsupported, f + ": format not recognised (use --from spt-json, geometrize-json, lottie or svg)");
         auto doc = imp->load(f, std::move(*text), opts);
         if (!doc) return doc.error();
         if (files->size() == 1) return doc;
