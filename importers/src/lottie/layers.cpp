@@ -1,3 +1,7 @@
+// Times: a layer's properties are evaluated at the time of the composition that holds it (its
+// keyframe times are that composition's, start time "st" included, as lottie-web reads them);
+// a precomp's layers see (t - st) / sr, or its time remapping.
+//
 // The composition at a frame: layers bottom to top (shape, solid, precomp, null), their
 // transforms with parenting, in and out points, precomps with start time, stretch and time
 // remapping, and shape groups as After Effects defines them: a fill or stroke paints every path
@@ -159,8 +163,7 @@ struct LayerList {
 
 // The layer's matrix with its parents' (parents' opacity is not inherited, as in Lottie).
 Mat2x3 layer_matrix(Ctx& c, const LayerList& L, const Value& layer, double t, int guard) {
-    const double st = num(layer.find("st"), 0);
-    Mat2x3 m = transform(c, layer.find("ks"), t - st, nullptr);
+    Mat2x3 m = transform(c, layer.find("ks"), t, nullptr);
     if (const Value* p = layer.find("parent"); p && p->is_number()) {
         if (guard > 64) { c.fail("layer parenting is circular or deeper than 64"); return m; }
         auto it = L.by_ind.find(int64_t(p->number));
@@ -186,13 +189,13 @@ void layer(Ctx& c, const Comp& comp, const LayerList& L, const Value& ly, double
     const double st = num(ly.find("st"), 0), sr = num(ly.find("sr"), 1);
     const int ty = int(num(ly.find("ty"), -1));
     double o = 1;
-    transform(c, ly.find("ks"), t - st, &o);
+    transform(c, ly.find("ks"), t, &o);
     const Mat2x3 m = outer * layer_matrix(c, L, ly, t, 0);
     o *= outer_o;
     if (ty == 4) {
         std::vector<Geo> geo;
         Ops ops;
-        if (const Value* sh = ly.find("shapes")) group(c, *sh, t - st, m, o, geo, ops, 0);
+        if (const Value* sh = ly.find("shapes")) group(c, *sh, t, m, o, geo, ops, 0);
         for (auto it = ops.rbegin(); it != ops.rend(); ++it) out.insert(out.end(), it->begin(), it->end());
     } else if (ty == 1) {
         const double w = num(ly.find("sw"), 0), h = num(ly.find("sh"), 0);
@@ -214,7 +217,7 @@ void layer(Ctx& c, const Comp& comp, const LayerList& L, const Value& ly, double
         auto a = comp.assets.find(str(ly.find("refId")));
         if (a == comp.assets.end()) { c.warn("precomp layers whose asset is missing are not drawn"); return; }
         double ct = (t - st) / (sr != 0 ? sr : 1);
-        if (const Value* tm = ly.find("tm")) ct = prop1(c, tm, t - st, 0) * comp.fr;
+        if (const Value* tm = ly.find("tm")) ct = prop1(c, tm, t, 0) * comp.fr;
         layers(c, comp, *a->second, ct, m, o, depth + 1, out);
     } else if (ty == 2) {
         c.warn("image layers are not held by the format (no image strokes): they are not drawn");

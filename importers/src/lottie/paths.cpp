@@ -67,7 +67,8 @@ BezPath ellipse(Ctx& c, const Value& it, double t) {
 BezPath polystar(Ctx& c, const Value& it, double t) {
     auto p = prop(c, it.find("p"), t, {0, 0});
     p.resize(2);
-    const bool star = prop1(c, it.find("sy"), t, 1) == 1;
+    const Value* sy = it.find("sy");  // a plain number (1 star, 2 polygon), or in some files a property
+    const bool star = (sy && sy->is_number() ? sy->number : prop1(c, sy, t, 1)) != 2;
     const double pts = std::floor(prop1(c, it.find("pt"), t, 5));
     const int n = int(std::clamp(pts, 0.0, 10000.0));
     const double rot = prop1(c, it.find("r"), t, 0) * M_PI / 180;
