@@ -95,7 +95,7 @@ Result<Document> load(const std::string& path, std::string text, const ImportOpt
             if (id && id->is_string() && ls && ls->is_array()) comp.assets[id->text] = ls;
             else ++images;
         }
-        if (images) c.warn(std::to_string(images) + " image asset(s) are not held by the format (no image strokes): image layers are not drawn");
+        if (images) c.warn(std::to_string(images) + " image asset(s) are not held by the format (it has no image strokes)");
     }
     if (root->find("fonts") || root->find("chars")) c.warn("fonts and glyphs are not read (text layers are not drawn)");
 

@@ -220,7 +220,7 @@ void layer(Ctx& c, const Comp& comp, const LayerList& L, const Value& ly, double
         if (const Value* tm = ly.find("tm")) ct = prop1(c, tm, t, 0) * comp.fr;
         layers(c, comp, *a->second, ct, m, o, depth + 1, out);
     } else if (ty == 2) {
-        c.warn("image layers are not held by the format (no image strokes): they are not drawn");
+        c.warn("image layers are not drawn (the format has no image strokes)");
     } else if (ty == 5) {
         c.warn("text layers are not drawn (the format holds no glyphs; convert text to shapes)");
     } else if (ty != 3) {

@@ -117,3 +117,9 @@ for name, doc in files.items():
     with open(name, "w") as f:
         json.dump(doc, f, separators=(",", ":"))
         f.write("\n")
+
+# The shapes as a .lottie archive (dotLottie: manifest.json and animations/<id>.json).
+import zipfile
+with zipfile.ZipFile("shapes.lottie", "w", zipfile.ZIP_DEFLATED) as z:
+    z.writestr("manifest.json", json.dumps({"version": "1", "animations": [{"id": "shapes"}]}))
+    z.writestr("animations/shapes.json", json.dumps(files["shapes.json"], separators=(",", ":")))
