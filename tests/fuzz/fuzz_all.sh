@@ -25,6 +25,7 @@ json fuzz_importers/fuzz_importers_json fuzz_importers/corpus/json 65536 10
 geometrize fuzz_importers/fuzz_importers_geometrize fuzz_importers/corpus/geometrize 8192 10
 strokes fuzz/fuzz_strokes fuzz/corpus/strokes 4096 10
 svg fuzz_importers/fuzz_importers_svg fuzz_importers/corpus/svg 65536 10
+lottie fuzz_importers/fuzz_importers_lottie fuzz_importers/corpus/lottie 65536 10
 container fuzz/fuzz_container fuzz/corpus/container 32768 10
 plan fuzz/fuzz_plan fuzz/corpus/plan 65536 10
 ocio fuzz/fuzz_ocio fuzz/corpus/ocio 16384 10"
