@@ -24,7 +24,8 @@ const MIN_DB = 40;
 // Chromium, 9.44 exactly; a filled parallelogram of that outline covers the same 9.61), and spt
 // renders the exact outline, so the 8 px strokes file meets a lower floor (37.7 dB measured).
 const FLOOR = { 'strokes.json': 36 };
-const MAX_FRAMES = 24;  // frames compared per file, evenly spread
+const MAX_FRAMES = 24;
+const EXPORT_MIN_DB = 35;  // spt export --lottie played by lottie-web, against spt render  // frames compared per file, evenly spread
 // Shared files whose features the format holds (the others use masks, mattes, expressions,
 // text or images; their PSNR is printed, not asserted).
 const HELD = new Set(['bacon.json']);
@@ -38,9 +39,9 @@ if (!fs.existsSync(path.join(shared, 'bacon.json'))) throw new Error(`media miss
 const only = process.env.LOTTIE_TEST_ONLY;  // one file's name, to debug it
 const files = [
   ...fs.readdirSync(shared).filter((f) => f.endsWith('.json')).sort().map((f) => ({ file: path.join(shared, f), held: HELD.has(f) })),
-  ...fs.readdirSync(synthetic).filter((f) => f.endsWith('.json')).sort().map((f) => ({ file: path.join(synthetic, f), held: true })),
+  ...fs.readdirSync(synthetic).filter((f) => f.endsWith('.json') && !f.endsWith('.strokes.json')).sort().map((f) => ({ file: path.join(synthetic, f), held: true })),
 ];
-if (only) files.splice(0, files.length, ...files.filter((f) => path.basename(f.file) === only));
+if (only) files.splice(0, files.length, ...files.filter((f) => path.basename(f.file) === only || only.startsWith('export-')));
 else if (files.length < 8) throw new Error(`expected the shared and synthetic Lottie files, found ${files.length}`);
 
 function ppm(file) {
@@ -59,18 +60,15 @@ try {
   page.on('pageerror', (e) => errors.push(e.message));
   await page.setContent('<!DOCTYPE html><html><body style="margin:0;background:#fff"><div id="c"></div></body></html>');
   await page.addScriptTag({ path: lottiePath });
-  for (const { file, held } of files) {
-    const name = path.basename(file);
-    const data = JSON.parse(fs.readFileSync(file, 'utf8'));
-    const out = path.join(work, name.replace(/\.json$/, '.spt'));
-    execFileSync(spt, ['import', file, '-o', out, '--quiet'], { stdio: ['ignore', 'pipe', 'inherit'] });
+  // Mean PSNR of lottie-web's frames of `data` against spt render's frames of `sptFile`.
+  async function measure(name, data, sptFile) {
     const n = Math.round(data.op - data.ip);
     const stride = Math.max(1, Math.ceil(n / MAX_FRAMES));
     const frames = [];
     for (let f = 0; f < n; f += stride) frames.push(f);
     const dir = path.join(work, name + '.frames');
     fs.mkdirSync(dir);
-    execFileSync(spt, ['render', out, '-o', path.join(dir, 'f.####.ppm'), '--frames', `0-${n - 1}x${stride}`,
+    execFileSync(spt, ['render', sptFile, '-o', path.join(dir, 'f.####.ppm'), '--frames', `0-${n - 1}x${stride}`,
                        '--background', 'ffffff'], { stdio: ['ignore', 'pipe', 'inherit'] });
     await page.evaluate(({ data }) => {
       if (window.anim) window.anim.destroy();
@@ -112,16 +110,44 @@ try {
       sum += db;
       if (db < min) { min = db; worst = f; }
     }
-    const mean = sum / frames.length;
+    return { frames: frames.length, mean: sum / frames.length, min, worst };
+  }
+
+  // Import: lottie-web's render of each Lottie file against spt render of its import.
+  for (const { file, held } of files) {
+    const name = path.basename(file);
+    const data = JSON.parse(fs.readFileSync(file, 'utf8'));
+    const out = path.join(work, name.replace(/\.json$/, '.spt'));
+    execFileSync(spt, ['import', file, '-o', out, '--quiet'], { stdio: ['ignore', 'pipe', 'inherit'] });
+    const { frames, mean, min, worst } = await measure(name, data, out);
     const raw = fs.statSync(file).size;
     const gz = zlib.gzipSync(fs.readFileSync(file), { level: 9 }).length;
     const bytes = fs.statSync(out).size;
     const floor = FLOOR[name] ?? MIN_DB;
     const ok = !held || mean >= floor;
     if (!ok) failed++;
-    rows.push({ name, frames: frames.length, mean, min, bytes, raw, gz, held, ok });
-    console.log(`${ok ? 'ok  ' : 'FAIL'} ${name}: ${frames.length} frames, mean ${mean.toFixed(2)} dB (min ${min.toFixed(2)} at frame ${worst}),` +
+    console.log(`${ok ? 'ok  ' : 'FAIL'} ${name}: ${frames} frames, mean ${mean.toFixed(2)} dB (min ${min.toFixed(2)} at frame ${worst}),` +
                 ` .spt ${bytes} B, JSON ${raw} B, gzip ${gz} B${held ? '' : ' (not asserted: features the format lacks)'}`);
+  }
+
+  // Export: `spt export --lottie` of .spt files (the synthetic imports: polygons and curves; an
+  // SVG import: affine strokes; a stroke list of stamps) played by lottie-web against spt render.
+  const exports = files.filter((f) => f.file.startsWith(synthetic)).map((f) => path.join(work, path.basename(f.file).replace(/\.json$/, '.spt')));
+  const svg = path.join(media, 'foreign', 'coffee-primitive-ellipses.svg');
+  if (!fs.existsSync(svg)) throw new Error(`media missing: ${svg}`);
+  execFileSync(spt, ['import', svg, '-o', path.join(work, 'primitive.spt'), '--quiet']);
+  exports.push(path.join(work, 'primitive.spt'));
+  execFileSync(spt, ['import', path.join(synthetic, 'stamps.strokes.json'), '-o', path.join(work, 'stamps.spt'), '--quiet']);
+  exports.push(path.join(work, 'stamps.spt'));
+  for (const sptFile of exports.filter((e) => !only || only === 'export-' + path.basename(e, '.spt'))) {
+    const name = 'export-' + path.basename(sptFile, '.spt');
+    const json = path.join(work, name + '.json');
+    execFileSync(spt, ['export', sptFile, '-o', json, '--lottie'], { stdio: ['ignore', 'pipe', 'inherit'] });
+    const { frames, mean, min, worst } = await measure(name, JSON.parse(fs.readFileSync(json, 'utf8')), sptFile);
+    const ok = mean >= EXPORT_MIN_DB;
+    if (!ok) failed++;
+    console.log(`${ok ? 'ok  ' : 'FAIL'} ${name}: ${frames} frames, mean ${mean.toFixed(2)} dB (min ${min.toFixed(2)} at frame ${worst}),` +
+                ` Lottie ${fs.statSync(json).size} B, .spt ${fs.statSync(sptFile).size} B`);
   }
   if (errors.length) { console.log(`FAIL page errors: ${errors.join('; ')}`); failed++; }
 } finally {

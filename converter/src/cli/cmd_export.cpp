@@ -35,6 +35,37 @@ bool frames_sound(Reader& r, const std::string& in, const std::vector<size_t>& p
     return true;
 }
 
+// spt export IN.spt -o OUT.json --lottie: every frame read, then written as one Lottie file.
+int export_lottie_file(const std::string& in, const std::string& out, bool vector_only) {
+    auto reader = io::open_spt(in);
+    if (!reader) return fail(reader.error().message);
+    Reader& r = **reader;
+    const size_t n = r.frames().size();
+    std::vector<size_t> every(n);
+    for (size_t i = 0; i < n; ++i) every[i] = i;
+    if (int rc = 0; !frames_sound(r, in, every, true, rc)) return rc;
+    import::Document doc;
+    doc.info = r.info();
+    for (size_t i = 0; i < n; ++i) {
+        auto f = r.read_frame(i);
+        if (!f) return fail(io::frame_place(r, i) + ": " + io::describe_error(in, f.error()));
+        doc.frames.push_back(std::move(*f));
+    }
+    import::LottieExportStats st;
+    auto text = import::export_lottie(doc, vector_only, st);
+    if (!text) return fail(in + ": " + text.error().message);
+    if (Status s = import::write_file_atomic(out, *text); !s) return fail(s.error().message);
+    if (st.left_out_vector_only)
+        std::fprintf(stderr, "spt export: --vector-only left out %llu stamp and affine strokes\n", (unsigned long long)st.left_out_vector_only);
+    if (st.left_out_bitmaps)
+        std::fprintf(stderr, "spt export: %llu strokes of bitmap templates have no vector form in Lottie: left out\n",
+                     (unsigned long long)st.left_out_bitmaps);
+    if (st.approximated)
+        std::fprintf(stderr, "spt export: %llu curves of varying width drawn at their mean width (a Lottie stroke has one)\n",
+                     (unsigned long long)st.approximated);
+    return 0;
+}
+
 }  // namespace
 
 int cmd_export(int argc, char** argv) {
@@ -45,6 +76,9 @@ int cmd_export(int argc, char** argv) {
                                  "OUT.svg: one SVG per frame, with #### (or %04d) in the name for several frames; "
                                  "OUT.html: one self-contained page that plays the clip (web/README.md)", 'o')
         .option("frames", "RANGE", "SVG only: the frames to export (\"0-10,20\"; 0-based)")
+        .flag("lottie", "OUT.json as a Lottie animation (bodymovin JSON) that Lottie players play: one shape layer a "
+                        "stroke over the frames it lives; polygons filled paths, curves round stroked paths, stamp and "
+                        "affine strokes their template's outline (bitmap templates left out, counted)")
         .flag("vector-only", "SVG only: leave out stamp and affine strokes, keeping the polygons and curves: a "
                              "--style cartoon painting's fills and lines as plain vector art, without the residual "
                              "stamps that add its last decibels (their count is said on stderr)")
@@ -69,10 +103,15 @@ int cmd_export(int argc, char** argv) {
         return export_web(in, out, args.has("web"));
     }
     const bool json = ends_with(out, ".json"), svg = ends_with(out, ".svg");
+    if (args.has("lottie")) {
+        if (!json) return args.usage_error("--lottie writes a Lottie JSON file: the output must end in .json: " + out);
+        if (args.has("frames")) return args.usage_error("--frames applies to SVG output only (the Lottie file holds every frame)");
+        return export_lottie_file(in, out, args.has("vector-only"));
+    }
     if (!json && !svg) return args.usage_error("the output must end in .json, .svg or .html (or give --web and a folder): " + out);
     if (json && args.has("frames")) return args.usage_error("--frames applies to SVG output only (JSON holds every frame as stored)");
     if (json && args.has("vector-only"))
-        return args.usage_error("--vector-only applies to SVG output only (JSON holds every stroke, to import back)");
+        return args.usage_error("--vector-only applies to SVG and Lottie output only (JSON holds every stroke, to import back)");
     const bool vector_only = args.has("vector-only");
     io::FrameRange range;
     if (args.has("frames")) {

@@ -44,7 +44,7 @@ bool parse_rgb(std::string s, Rgb8& c) {
 int cmd_import(int argc, char** argv) {
     std::string importers_help = "Importers (--from):\n";
     for (const auto* i : import::importers()) importers_help += std::string("  ") + i->name + ": " + i->description + "\n";
-    Args args("import", "bring strokes from other painters (JSON, SVG, geometrize) into .spt",
+    Args args("import", "bring strokes from other painters (JSON, SVG, geometrize, Lottie) into .spt",
               "spt import IN -o OUT.spt [--from NAME] [--reference PNG] [options]");
     args.positional("IN", "a file, a numbered sequence (shapes.####.svg, frame_%04d.json) or a folder of .svg/.json files")
         .option("output", "OUT.spt", "the .spt file to write", 'o')
