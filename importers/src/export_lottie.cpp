@@ -25,7 +25,8 @@ struct Span {
 
 void num(std::string& o, double v) {
     char b[32];
-    std::snprintf(b, sizeof b, "%.6g", std::fabs(v) < 1e-9 ? 0.0 : v);
+    // 12 digits: every Q4 value (a multiple of 1/16 below 2^20 px) is written exactly.
+    std::snprintf(b, sizeof b, "%.12g", std::fabs(v) < 1e-9 ? 0.0 : v);
     o += b;
 }
 

@@ -224,3 +224,61 @@ TEST(LottieHostile, BadCanvasAndRatesAreNamed) {
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error().message.find("\"op\" is missing"), std::string::npos) << r.error().message;
 }
+
+#include "spt_import/export.hpp"
+
+// Export: polygons and their frames come back exactly through the Lottie importer (vertices are
+// Q4 values written exactly, straight segments need no flattening).
+TEST(LottieExport, PolygonsRoundTripThroughTheImporter) {
+    auto d = import_path(kDir + "precomp.json", "lottie");
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    LottieExportStats st;
+    auto text = export_lottie(*d, false, st);
+    ASSERT_TRUE(text.ok()) << text.error().message;
+    auto back = load_text(*text);
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    auto a = live_lists(*d), b = live_lists(*back);
+    ASSERT_TRUE(a.ok() && b.ok());
+    ASSERT_EQ(a->size(), b->size());
+    for (size_t f = 0; f < a->size(); ++f) {
+        ASSERT_EQ((*a)[f].size(), (*b)[f].size()) << "frame " << f;
+        for (size_t k = 0; k < (*a)[f].size(); ++k) {
+            EXPECT_EQ((*a)[f][k].polygon.points, (*b)[f][k].polygon.points) << "frame " << f << " stroke " << k;
+            EXPECT_EQ((*a)[f][k].polygon.color.a, (*b)[f][k].polygon.color.a) << "frame " << f << " stroke " << k;
+        }
+    }
+    // An unchanged stroke is one layer over its frames: the solid, drawn in all 60 frames.
+    EXPECT_LT(st.layers, 60u * 4);
+}
+
+TEST(LottieExport, VectorOnlyLeavesOutStampsAndCountsBitmaps) {
+    Document d;
+    d.info.header = default_header(32, 32, Rgb8{255, 255, 255});
+    d.info.templates = default_templates();
+    Template bitmap;
+    bitmap.kind = TemplateKind::Bitmap;
+    bitmap.width = bitmap.height = 1;
+    bitmap.pixels = {255};
+    d.info.templates.push_back(bitmap);
+    Frame f;
+    StampStroke s;
+    s.x = s.y = 100;
+    f.added.push_back(Stroke::make_stamp(s));
+    s.tmpl = 3;  // the bitmap
+    f.added.push_back(Stroke::make_stamp(s));
+    PolygonStroke p;
+    p.points = {{0, 0}, {160, 0}, {0, 160}};
+    f.added.push_back(Stroke::make_polygon(p));
+    d.frames.push_back(f);
+    LottieExportStats all, vec;
+    ASSERT_TRUE(export_lottie(d, false, all).ok());
+    EXPECT_EQ(all.layers, 2u);
+    EXPECT_EQ(all.left_out_bitmaps, 1u);
+    auto text = export_lottie(d, true, vec);
+    ASSERT_TRUE(text.ok());
+    EXPECT_EQ(vec.layers, 1u);
+    EXPECT_EQ(vec.left_out_vector_only, 2u);
+    // The opaque canvas is a solid layer of its colour.
+    EXPECT_NE(text->find(R"("ty":1)"), std::string::npos);
+    EXPECT_NE(text->find("#ffffff"), std::string::npos);
+}
