@@ -70,7 +70,7 @@ int export_lottie_file(const std::string& in, const std::string& out, bool vecto
 
 int cmd_export(int argc, char** argv) {
     Args args("export", "write a .spt file as SVG (a file a frame), a JSON stroke list or a web page",
-              "spt export IN.spt -o OUT.json|OUT.svg|OUT.####.svg [--frames RANGE]|OUT.html | -o DIR/ --web");
+              "spt export IN.spt -o OUT.json [--lottie]|OUT.svg|OUT.####.svg [--frames RANGE]|OUT.html | -o DIR/ --web");
     args.positional("IN.spt", "the .spt file to export")
         .option("output", "OUT", "OUT.json: the JSON stroke list (importers/README.md), every frame as stored; "
                                  "OUT.svg: one SVG per frame, with #### (or %04d) in the name for several frames; "
