@@ -282,3 +282,15 @@ TEST(LottieExport, VectorOnlyLeavesOutStampsAndCountsBitmaps) {
     EXPECT_NE(text->find(R"("ty":1)"), std::string::npos);
     EXPECT_NE(text->find("#ffffff"), std::string::npos);
 }
+
+// Dashes: the circle's pattern (14 on, 8 off around 251 px) gives 11 or 12 round-capped curves.
+TEST(Lottie, DashesSplitTheStroke) {
+    auto d = import_path(kDir + "dashes.json", "lottie");
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    EXPECT_EQ(notes_with(*d, "dash"), 0u);
+    const auto& s = d->frames.at(0).added;
+    const size_t curves = count(s, StrokeKind::Curve);
+    EXPECT_GE(curves, 11u);
+    EXPECT_LE(curves, 13u);
+    EXPECT_GE(count(s, StrokeKind::Polygon), 1u);
+}

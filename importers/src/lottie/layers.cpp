@@ -108,7 +108,17 @@ void group(Ctx& c, const Value& items, double t, const Mat2x3& m, double opacity
             std::vector<double> col = ty == "st" ? prop(c, it.find("c"), t, {0, 0, 0}) : gradient_mean(c, it, t);
             if (ty == "gs") c.warn("gradient strokes are drawn in the mean colour of their stops");
             const double o = prop1(c, it.find("o"), t, 100) / 100 * opacity;
-            if (it.find("d")) c.warn("dashed strokes are drawn solid");
+            // Dashes: "d" entries {"n": "d" dash, "g" gap, "o" offset, "v": length}.
+            std::vector<double> pattern;
+            double dash_offset = 0;
+            if (const Value* d = it.find("d"); d && d->is_array())
+                for (const Value& e : d->items) {
+                    const std::string n = str(e.find("n"));
+                    const double v = prop1(c, e.find("v"), t, 0);
+                    if (n == "o") dash_offset = v;
+                    else if (n == "d" || n == "g") pattern.push_back(v);
+                }
+            if (pattern.size() % 2) pattern.insert(pattern.end(), pattern.begin(), pattern.end());  // odd: repeated, as a canvas does
             StrokeStyle st;
             st.cap = int(num(it.find("lc"), 2));
             st.join = int(num(it.find("lj"), 2));
@@ -118,7 +128,15 @@ void group(Ctx& c, const Value& items, double t, const Mat2x3& m, double opacity
             for (const Geo& g : geo) {
                 if (g.skewed) c.warn("strokes under non-uniform scale or skew are drawn with one width");
                 st.width = w * g.scale;
-                stroke_polys(c, g.polys, st, colour(col, o), s);
+                if (pattern.empty()) {
+                    stroke_polys(c, g.polys, st, colour(col, o), s);
+                } else {
+                    std::vector<double> scaled = pattern;
+                    for (double& v : scaled) v *= g.scale;
+                    std::vector<Poly> dashed = g.polys;
+                    dash(dashed, scaled, dash_offset * g.scale);
+                    stroke_polys(c, dashed, st, colour(col, o), s);
+                }
             }
             ops.push_back(std::move(s));
         } else if (ty == "tm") {

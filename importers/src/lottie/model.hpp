@@ -71,6 +71,9 @@ struct Poly { std::vector<Point> pts; bool closed = false; };
 // Trim paths (start, end in 0..1, offset in turns) applied to flattened polylines, either over
 // their joined length ("simultaneously" = false) or each one alone.
 void trim(std::vector<Poly>& polys, double start, double end, double offset, bool individually);
+// Dashes: the pattern's lengths (dash, gap, dash, gap ...) laid along each polyline from
+// `offset` into the pattern, in canvas pixels.
+void dash(std::vector<Poly>& polys, const std::vector<double>& pattern, double offset);
 
 // ---- outline.cpp: fills and strokes ------------------------------------------------------------
 

@@ -220,4 +220,27 @@ void trim(std::vector<Poly>& polys, double start, double end, double offset, boo
     polys = std::move(out);
 }
 
+void dash(std::vector<Poly>& polys, const std::vector<double>& pattern, double offset) {
+    double period = 0;
+    for (double d : pattern) period += std::max(d, 0.0);
+    if (pattern.empty() || period <= 0) return;
+    std::vector<Poly> out;
+    for (const Poly& p : polys) {
+        const double len = length(p);
+        // Dashes start `offset` into the pattern, as a canvas's lineDashOffset does.
+        double pos = -std::fmod(std::fmod(offset, period) + period, period);
+        size_t k = 0;
+        while (pos < len && out.size() < (1u << 20)) {
+            const double d = std::max(pattern[k % pattern.size()], 0.0);
+            if (k % 2 == 0 && pos + d > 0) {
+                Poly q = piece(p, std::max(pos, 0.0), std::min(pos + d, len));
+                if (q.pts.size() >= 2) out.push_back(std::move(q));
+            }
+            pos += d;
+            ++k;
+        }
+    }
+    polys = std::move(out);
+}
+
 }  // namespace spt::import::lottie

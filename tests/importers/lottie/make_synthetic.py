@@ -113,6 +113,13 @@ files["trim.json"] = comp([
                     {"ty": "gr", "it": [zig(60), zig(120),
                                         {"ty": "tm", "s": kf([(0, 0), (40, 50)]), "e": st(100), "o": st(0), "m": 2},
                                         stroke(BLUE, 6, lc=1, lj=1), tr(p=(0, 0), s=(100, 100))]}])], op=45)
+# Dashes: a dashed circle (round caps) with an animated offset, a dashed zigzag (butt caps).
+dashed = lambda st_, pattern, off: dict(st_, d=[{"n": "d", "v": st(pattern[0])}, {"n": "g", "v": st(pattern[1])},
+                                                {"n": "o", "v": off}])
+files["dashes.json"] = comp([
+    shape_layer(1, [{"ty": "gr", "it": [{"ty": "el", "p": st([60, 80]), "s": st([80, 80])},
+                                        dashed(stroke(RED, 6, lc=2, lj=2), (14, 8), kf([(0, 0), (30, 44)])), tr()]},
+                    {"ty": "gr", "it": [zig(60), dashed(stroke(BLUE, 5, lc=1, lj=1), (20, 6), st(5)), tr(p=(0, 80))]}])], op=30)
 for name, doc in files.items():
     with open(name, "w") as f:
         json.dump(doc, f, separators=(",", ":"))
