@@ -70,7 +70,7 @@ int export_lottie_file(const std::string& in, const std::string& out, bool vecto
 
 int cmd_export(int argc, char** argv) {
     Args args("export", "write a .spt file as SVG (a file a frame), a JSON stroke list or a web page",
-              "spt export IN.spt -o OUT.json [--lottie]|OUT.svg|OUT.####.svg [--frames RANGE]|OUT.html | -o DIR/ --web");
+              "spt export IN.spt -o OUT.json|OUT.svg|OUT.####.svg [--frames RANGE]|OUT.html | -o DIR/ --web");
     args.positional("IN.spt", "the .spt file to export")
         .option("output", "OUT", "OUT.json: the JSON stroke list (importers/README.md), every frame as stored; "
                                  "OUT.svg: one SVG per frame, with #### (or %04d) in the name for several frames; "
@@ -79,7 +79,7 @@ int cmd_export(int argc, char** argv) {
         .flag("lottie", "OUT.json as a Lottie animation (bodymovin JSON) that Lottie players play: one shape layer a "
                         "stroke over the frames it lives; polygons filled paths, curves round stroked paths, stamp and "
                         "affine strokes their template's outline (bitmap templates left out, counted)")
-        .flag("vector-only", "SVG only: leave out stamp and affine strokes, keeping the polygons and curves: a "
+        .flag("vector-only", "SVG and --lottie only: leave out stamp and affine strokes, keeping the polygons and curves: a "
                              "--style cartoon painting's fills and lines as plain vector art, without the residual "
                              "stamps that add its last decibels (their count is said on stderr)")
         .flag("web", "write DIR/ for a web server: the player (web/README.md), its WebAssembly module, the clip and "
