@@ -5,6 +5,7 @@
 // registers the importer.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "lottie/model.hpp"
 #include "lottie/zip.hpp"
@@ -81,8 +82,11 @@ Result<Document> load(const std::string& path, std::string text, const ImportOpt
     const double frames = std::ceil(op - ip);
     if (!(frames >= 1)) return make_error(Code::InvalidArgument, path + ": \"op\" must be after \"ip\"");
     if (frames > c.bounds.max_frames || frames > opts.limits.max_frames)
-        return make_error(Code::LimitExceeded, path + ": " + std::to_string(uint64_t(frames)) + " frames is above the limit of " +
-                                                   std::to_string(c.bounds.max_frames));
+    {
+        char n[32];
+        std::snprintf(n, sizeof n, "%.6g", frames);  // op - ip may be any double
+        return make_error(Code::LimitExceeded, path + ": " + n + " frames is above the limit of " + std::to_string(c.bounds.max_frames));
+    }
 
     Comp comp;
     comp.root = &*root;

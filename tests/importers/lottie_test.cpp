@@ -294,3 +294,13 @@ TEST(Lottie, DashesSplitTheStroke) {
     EXPECT_LE(curves, 13u);
     EXPECT_GE(count(s, StrokeKind::Polygon), 1u);
 }
+
+TEST(LottieHostile, TinyDashesAndHugeFrameCountsAreRefused) {
+    auto r = load_text(comp(R"([{"ty":"el","p":{"a":0,"k":[50,50]},"s":{"a":0,"k":[80,80]}},{"ty":"st","w":{"a":0,"k":1},)"
+                            R"("c":{"a":0,"k":[0,0,0,1]},"d":[{"n":"d","v":{"a":0,"k":1e-300}},{"n":"g","v":{"a":0,"k":1e-300}}]}])"));
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("in.json: a dash pattern makes more than 65536 dashes"), std::string::npos) << r.error().message;
+    r = load_text(R"({"v":"5","fr":30,"ip":0,"op":1e300,"w":10,"h":10,"layers":[]})");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("in.json: 1e+300 frames is above the limit of 65536"), std::string::npos) << r.error().message;
+}

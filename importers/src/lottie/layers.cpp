@@ -134,7 +134,10 @@ void group(Ctx& c, const Value& items, double t, const Mat2x3& m, double opacity
                     std::vector<double> scaled = pattern;
                     for (double& v : scaled) v *= g.scale;
                     std::vector<Poly> dashed = g.polys;
-                    dash(dashed, scaled, dash_offset * g.scale);
+                    if (!dash(dashed, scaled, dash_offset * g.scale, c.bounds.max_path_vertices)) {
+                        c.fail("a dash pattern makes more than " + std::to_string(c.bounds.max_path_vertices) + " dashes on one path");
+                        return;
+                    }
                     stroke_polys(c, dashed, st, colour(col, o), s);
                 }
             }

@@ -72,8 +72,9 @@ struct Poly { std::vector<Point> pts; bool closed = false; };
 // their joined length ("simultaneously" = false) or each one alone.
 void trim(std::vector<Poly>& polys, double start, double end, double offset, bool individually);
 // Dashes: the pattern's lengths (dash, gap, dash, gap ...) laid along each polyline from
-// `offset` into the pattern, in canvas pixels.
-void dash(std::vector<Poly>& polys, const std::vector<double>& pattern, double offset);
+// `offset` into the pattern, in canvas pixels. False (nothing changed) when that would make
+// more than `max_dashes` dashes.
+bool dash(std::vector<Poly>& polys, const std::vector<double>& pattern, double offset, size_t max_dashes);
 
 // ---- outline.cpp: fills and strokes ------------------------------------------------------------
 

@@ -220,17 +220,21 @@ void trim(std::vector<Poly>& polys, double start, double end, double offset, boo
     polys = std::move(out);
 }
 
-void dash(std::vector<Poly>& polys, const std::vector<double>& pattern, double offset) {
+bool dash(std::vector<Poly>& polys, const std::vector<double>& pattern, double offset, size_t max_dashes) {
     double period = 0;
     for (double d : pattern) period += std::max(d, 0.0);
-    if (pattern.empty() || period <= 0) return;
+    if (pattern.empty() || period <= 0) return true;
+    double total = 0;
+    for (const Poly& p : polys) total += length(p);
+    // Bounded before any is made: a tiny pattern on a long path would make millions.
+    if (!(total / period * double(pattern.size()) / 2 <= double(max_dashes))) return false;
     std::vector<Poly> out;
     for (const Poly& p : polys) {
         const double len = length(p);
         // Dashes start `offset` into the pattern, as a canvas's lineDashOffset does.
         double pos = -std::fmod(std::fmod(offset, period) + period, period);
         size_t k = 0;
-        while (pos < len && out.size() < (1u << 20)) {
+        while (pos < len) {
             const double d = std::max(pattern[k % pattern.size()], 0.0);
             if (k % 2 == 0 && pos + d > 0) {
                 Poly q = piece(p, std::max(pos, 0.0), std::min(pos + d, len));
@@ -241,6 +245,7 @@ void dash(std::vector<Poly>& polys, const std::vector<double>& pattern, double o
         }
     }
     polys = std::move(out);
+    return true;
 }
 
 }  // namespace spt::import::lottie
