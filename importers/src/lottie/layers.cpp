@@ -48,14 +48,14 @@ Mat2x3 transform(Ctx& c, const Value* ks, double t, double* opacity) {
     return m * Mat2x3::scale(s[0] / 100, s[1] / 100) * Mat2x3::translate(-a[0], -a[1]);
 }
 
-// A gradient's colour stops averaged: the closest one colour to a gradient.
+// A gradient's colour stops averaged ("g": "p" stops of offset, r, g, b): one colour for it.
 std::vector<double> gradient_mean(Ctx& c, const Value& it, double t) {
     const Value* g = it.find("g");
     const int n = g ? int(num(g->find("p"), 0)) : 0;
     auto v = g ? prop(c, g->find("k"), t, {}) : std::vector<double>{};
     double r = 0, gg = 0, b = 0;
     int k = 0;
-    for (; k < n && size_t(4 * k + 3) < v.size() + 0; ++k) { r += v[4 * k + 1]; gg += v[4 * k + 2]; b += v[4 * k + 3]; }
+    for (; k < n && size_t(4 * k + 3) < v.size(); ++k) { r += v[4 * k + 1]; gg += v[4 * k + 2]; b += v[4 * k + 3]; }
     if (!k) return {0, 0, 0};
     return {r / k, gg / k, b / k};
 }
