@@ -8,7 +8,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "video/video_paint.hpp"
+#include "video/frame_rate.hpp"
 #include "video/video_reader.hpp"
 
 namespace spt::video {

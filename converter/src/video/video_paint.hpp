@@ -20,6 +20,7 @@
 #include "paint/scene_paint.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
+#include "video/frame_rate.hpp"  // parse_fps for `fps`
 
 namespace spt::video {
 
@@ -153,10 +154,5 @@ bool frames_consecutive(const std::string& frames);
 // appended (a farm shot's seed and place over a painter's own metadata).
 void merge_metadata(std::vector<std::pair<std::string, std::string>>& meta,
                     const std::vector<std::pair<std::string, std::string>>& entries);
-
-// "24" -> 24/1, "30000/1001", "29.97" -> 30000/1001, "23.976" -> 24000/1001, "25.0" -> 25/1.
-Result<Rational> parse_fps(const std::string& text);
-// A container's floating-point rate as the rational it stands for (NTSC rates recognised).
-Rational fps_from_double(double fps);
 
 }  // namespace spt::video
