@@ -17,8 +17,8 @@
 #include "spt/concat.hpp"
 #include "spt/reader.hpp"
 #include "spt/writer.hpp"
-#include "video/frame_source.hpp"
-#include "video/stop_signal.hpp"
+#include "frames/frame_source.hpp"
+#include "frames/stop_signal.hpp"
 #include "video/video_encoder.hpp"
 #include "video/video_paint.hpp"
 

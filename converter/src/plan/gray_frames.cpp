@@ -14,9 +14,9 @@
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
 #include "plan/ordered_prefetch.hpp"
-#include "video/frame_source.hpp"
+#include "frames/frame_source.hpp"
 #include "video/video_paint.hpp"
-#include "video/video_reader.hpp"
+#include "frames/video_reader.hpp"
 
 namespace spt::plan {
 

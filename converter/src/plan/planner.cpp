@@ -11,7 +11,7 @@
 #include "plan/frame_span.hpp"
 #include "plan/gray_frames.hpp"
 #include "plan/sampled_cuts.hpp"
-#include "video/cut_detect.hpp"
+#include "frames/cut_detect.hpp"
 #include "video/video_encoder.hpp"
 #include "video/video_paint.hpp"
 

@@ -20,7 +20,7 @@
 #include "spt/types.hpp"
 #include "spt/writer.hpp"
 #include "video/band_render.hpp"
-#include "video/cut_detect.hpp"
+#include "frames/cut_detect.hpp"
 #include "video/motion.hpp"
 #include "video/video_paint.hpp"
 

@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "io/sequence.hpp"
-#include "video/frame_source.hpp"
+#include "frames/frame_source.hpp"
 #include "io/roi_file.hpp"
-#include "video/stop_signal.hpp"
+#include "frames/stop_signal.hpp"
 #include "video/video_encoder.hpp"
 #include "spt/utf8.hpp"
 #include "spt/concat.hpp"

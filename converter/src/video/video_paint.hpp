@@ -15,12 +15,12 @@
 #include <vector>
 
 #include "io/progress.hpp"
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "paint/painter.hpp"
 #include "paint/scene_paint.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
-#include "video/frame_rate.hpp"  // parse_fps for `fps`
+#include "frames/frame_rate.hpp"  // parse_fps for `fps`
 
 namespace spt::video {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "io/image_io.hpp"
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "io/sequence.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"

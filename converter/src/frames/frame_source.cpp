@@ -1,4 +1,4 @@
-#include "video/frame_source.hpp"
+#include "frames/frame_source.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "video/frame_rate.hpp"
-#include "video/video_reader.hpp"
+#include "frames/frame_rate.hpp"
+#include "frames/video_reader.hpp"
 
 namespace spt::video {
 

@@ -1,5 +1,5 @@
 // Frame rates as the rationals a .spt header stores (frame_rate.hpp).
-#include "video/frame_rate.hpp"
+#include "frames/frame_rate.hpp"
 
 #include <cmath>
 #include <cstdlib>
