@@ -161,4 +161,9 @@ Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const
         std::make_unique<SequenceSource>(input, std::move(numbers), std::move(by_number), skip_bad_frames, scene));
 }
 
+bool frames_consecutive(const std::string& frames) {
+    Result<io::FrameRange> r = io::parse_frame_range(frames);
+    return r && (r->empty() || (r->spans.size() == 1 && r->step(0) == 1));
+}
+
 }  // namespace spt::video

@@ -46,4 +46,8 @@ public:
 Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const std::string& frames,
                                                  bool skip_bad_frames, const io::SceneReadOptions* scene = nullptr);
 
+// True when a --frames value selects consecutive frame numbers (one span, step 1, or all):
+// then a painting's frame 0 may name its source frame (metadata source.first_frame).
+bool frames_consecutive(const std::string& frames);
+
 }  // namespace spt::video

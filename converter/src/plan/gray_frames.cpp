@@ -11,12 +11,12 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "frames/frame_rate.hpp"
+#include "frames/frame_source.hpp"
+#include "frames/video_reader.hpp"
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
 #include "plan/ordered_prefetch.hpp"
-#include "frames/frame_source.hpp"
-#include "video/video_paint.hpp"
-#include "frames/video_reader.hpp"
 
 namespace spt::plan {
 

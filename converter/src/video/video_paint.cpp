@@ -44,11 +44,6 @@ void merge_metadata(std::vector<std::pair<std::string, std::string>>& meta,
     }
 }
 
-bool frames_consecutive(const std::string& frames) {
-    Result<io::FrameRange> r = io::parse_frame_range(frames);
-    return r && (r->empty() || (r->spans.size() == 1 && r->step(0) == 1));
-}
-
 Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {
     StopSignals guard(opts.install_signal_handlers);
     auto stop_requested = [&] {

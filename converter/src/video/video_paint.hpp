@@ -146,10 +146,6 @@ int run_video_paint(const VideoPaintOptions& opts, io::Progress& progress,
 Status video_paint(const VideoPaintOptions& opts, io::Progress& progress,
                    VideoPaintReport* report = nullptr);
 
-// True when a --frames value selects consecutive frame numbers (one span, step 1, or all):
-// then a painting's frame 0 may name its source frame (metadata source.first_frame).
-bool frames_consecutive(const std::string& frames);
-
 // Sets each of `entries` in `meta`: replacing the value of an entry of the same key, else
 // appended (a farm shot's seed and place over a painter's own metadata).
 void merge_metadata(std::vector<std::pair<std::string, std::string>>& meta,
