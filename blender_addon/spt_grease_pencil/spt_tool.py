@@ -11,6 +11,8 @@ import subprocess
 import tempfile
 import threading
 
+from .io import paint_options
+
 MIN_VERSION = (0, 1, 0)
 
 
@@ -95,28 +97,10 @@ def temp_path(suffix=".spt") -> str:
 
 
 def paint_args(opts: dict) -> list:
-    """Command-line options of `spt paint` from the panel's settings (skipping defaults)."""
-    a = []
-    if opts.get("style", "painterly") != "painterly":
-        a += ["--style", opts["style"]]
-    if opts.get("sets"):
-        a += ["--sets", str(opts["sets"])]
-    if opts.get("max_strokes"):
-        a += ["--max-strokes", str(opts["max_strokes"])]
-    if opts.get("target_psnr"):
-        a += ["--target-psnr", f"{opts['target_psnr']:g}"]
-    if opts.get("templates"):
-        a += ["--templates", opts["templates"]]
-    if opts.get("key_interval"):
-        a += ["--keyframe-interval", str(opts["key_interval"])]
-    if opts.get("roi") and opts.get("style", "painterly") != "cartoon":  # cartoons paint the whole frame
-        a += ["--roi-file", opts["roi"]]
-    if opts.get("frames"):
-        a += ["--frames", opts["frames"]]
-    if opts.get("fps"):
-        a += ["--fps", opts["fps"]]
-    a += ["--seed", str(opts.get("seed", 1))]
-    return a
+    """Command-line options of `spt paint` from the panel's settings (property name -> value),
+    through spt's option table (io/paint_options.py): defaults and options the style does not
+    take are left out."""
+    return paint_options.paint_args(paint_options.load(), opts)
 
 
 class PaintJob:

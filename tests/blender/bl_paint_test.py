@@ -122,7 +122,7 @@ scene.render.filepath = os.path.join(work, "render", "f_")
 scene.render.image_settings.file_format = 'PNG'
 write_clip(os.path.join(work, "render", "f_%04d.png"), range(1, 9), 96, 64, 0)
 out = os.path.join(work, "rendered.spt")
-obj = paint("rendered frames", out, source='RENDER', key_interval=4)
+obj = paint("rendered frames", out, source='RENDER', keyframe_interval=4)
 info = check_import("rendered frames", obj, out, 8)
 C.check(info["key_frames"][:2] == [0, 4] and len(info["key_frames"]) == 2,
         f"key frames every 4 frames: {info['key_frames']}")
@@ -133,7 +133,7 @@ check_export_renders_identically("rendered", obj, out)
 os.makedirs(os.path.join(work, "clip"), exist_ok=True)
 write_clip(os.path.join(work, "clip", "c.%04d.png"), range(1, 7), 80, 48, 3)
 out = os.path.join(work, "pattern.spt")
-obj = paint("file pattern", out, source='FILE', filepath=os.path.join(work, "clip", "c.####.png"), key_interval=0)
+obj = paint("file pattern", out, source='FILE', filepath=os.path.join(work, "clip", "c.####.png"), keyframe_interval=0)
 check_import("file pattern", obj, out, 6)
 check_export_renders_identically("pattern", obj, out)
 

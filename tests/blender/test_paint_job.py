@@ -66,7 +66,7 @@ class Cancel(unittest.TestCase):
         # (spt paint --help): the job must still leave nothing behind.
         src = write_sequence(os.path.join(self.dir, "seq"), 2000)
         return spt_tool.PaintJob(SPT, src, out, {"max_strokes": 400000, "sets": 6, "seed": 1, "frames": "1-2000",
-                                                 "key_interval": 1})
+                                                 "keyframe_interval": 1})
 
     def started(self, job):
         deadline = time.time() + 20
@@ -130,7 +130,7 @@ class CartoonJob(unittest.TestCase):
             roi = os.path.join(d, "roi.json")
             with open(roi, "w") as f:
                 f.write('{"rois":[{"x":1,"y":1,"w":8,"h":8}]}')
-            opts = {"style": "cartoon", "target_psnr": 30, "seed": 1, "frames": "1-4", "roi": roi}
+            opts = {"style": "cartoon", "target_psnr": 30, "seed": 1, "frames": "1-4", "roi_file": roi}
             self.assertNotIn("--roi-file", spt_tool.paint_args(opts))
             self.assertIn("--roi-file", spt_tool.paint_args(dict(opts, style="painterly")))
             out = os.path.join(d, "out.spt")

@@ -177,14 +177,16 @@ TEST(PlanCli, CartoonPlansPaintCartoonShots) {
     auto p = spt::plan::read_plan(plan);
     ASSERT_TRUE(p.ok()) << p.error().message;
     ASSERT_EQ(p->shots.size(), 2u);
-    ASSERT_GE(p->paint_args.size(), 2u);
-    EXPECT_EQ(p->paint_args[0] + " " + p->paint_args[1], "--style cartoon");
-    const auto mr = std::find(p->paint_args.begin(), p->paint_args.end(), "--min-region");
-    ASSERT_TRUE(mr != p->paint_args.end() && mr + 1 != p->paint_args.end()) << "the cartoon options travel with the plan";
-    EXPECT_EQ(*(mr + 1), "5");
-    const auto cs = std::find(p->paint_args.begin(), p->paint_args.end(), "--min-color-share");
-    ASSERT_TRUE(cs != p->paint_args.end() && cs + 1 != p->paint_args.end());
-    EXPECT_EQ(*(cs + 1), "0.002");
+    auto job_value = [&](const char* name) {
+        for (const spt::plan::JobOption& o : p->job)
+            if (o.name == name && o.values.size() == 1) return o.values[0];
+        return std::string("(absent)");
+    };
+    ASSERT_FALSE(p->job.empty());
+    EXPECT_EQ(p->job.front().name, "style") << "the style first: a plan's tasks paint in the style it was made with";
+    EXPECT_EQ(job_value("style"), "cartoon");
+    EXPECT_EQ(job_value("min-region"), "5") << "the cartoon options travel with the plan";
+    EXPECT_EQ(job_value("min-color-share"), "0.002");
     r = run_spt(d, {"paint", "--plan", plan, "-o", d.file("whole.spt"), "--progress", "none"});
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err, "") << "the shots join without a warning";
@@ -226,8 +228,8 @@ TEST(PlanCli, CartoonPlansPaintCartoonShots) {
                     "0.5", "--progress", "none"});
     ASSERT_EQ(r.code, 0) << r.err;
     const std::string text = slurp(d.file("plan2.json"));
-    EXPECT_NE(text.find("\"--no-lines\""), std::string::npos) << text;
-    EXPECT_NE(text.find("\"--outline-tolerance\",\n    \"0.5\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"no-lines\": true"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"outline-tolerance\": \"0.5\""), std::string::npos) << text;
 }
 
 TEST(PlanSplit, ShotsSplitIntoBalancedTasksOnKeyFrameSteps) {

@@ -1,5 +1,5 @@
 // Plans for the crafted-plan tests: a tiny PNG sequence planned with spt, and an edit of its
-// paint_args re-signed the way anyone can (the id is a checksum, not a signature).
+// job re-signed the way anyone can (the id is a checksum, not a signature).
 #pragma once
 
 #include <cstdio>
@@ -39,15 +39,14 @@ inline std::string resign(std::string text) {
     return body.substr(0, at) + "\n  \"id\": \"" + id + "\"," + body.substr(at);
 }
 
-// The plan with `extra` appended to its paint_args, re-signed.
-inline std::string with_paint_args(const std::string& plan_text, const std::vector<std::string>& extra) {
+// The plan with `members` (JSON text: "\"name\": value") added to its job, re-signed.
+inline std::string with_job(const std::string& plan_text, const std::vector<std::string>& members) {
     std::string t = plan_text;
-    const size_t args = t.find("\"paint_args\": [");
-    const size_t close = t.find("\n  ]", args);
-    if (args == std::string::npos || close == std::string::npos) return t;
+    const size_t job = t.find("\"job\": {");
+    if (job == std::string::npos) return t;
     std::string add;
-    for (const std::string& e : extra) add += ",\n    " + spt::io::json_quote(e);
-    t.insert(close, add);
+    for (const std::string& m : members) add += "\n    " + m + ",";
+    t.insert(job + 8, add);
     return resign(t);
 }
 

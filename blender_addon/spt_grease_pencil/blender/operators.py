@@ -9,6 +9,7 @@ from bpy_extras.io_utils import ExportHelper, ImportHelper
 
 from ..io.model import SptError
 from .. import spt_tool
+from ..io import paint_options
 from .preferences import spt_path
 
 LAYERING = [
@@ -138,10 +139,11 @@ class SPT_OT_paint(bpy.types.Operator):
         out = bpy.path.abspath(st.output) if st.output else spt_tool.temp_path()
         if os.path.isdir(out):
             raise SptError(f"output {out} is a folder; give a .spt file name")
-        opts = {"sets": st.sets, "max_strokes": st.max_strokes, "target_psnr": st.target_psnr,
-                "templates": bpy.path.abspath(st.templates) if st.templates else "",
-                "key_interval": st.key_interval, "roi": bpy.path.abspath(st.roi) if st.roi else "",
-                "seed": st.seed, "frames": frames, "style": st.style.lower()}
+        from .panel import OPTION_ROWS  # the panel's options: spt's option table
+        opts = {"frames": frames}
+        for r in OPTION_ROWS:
+            v = getattr(st, paint_options.prop_name(r))
+            opts[paint_options.prop_name(r)] = bpy.path.abspath(v) if r["kind"] == "path" and v else v
         if st.source == 'RENDER' or "#" in source or "%" in source:
             opts["fps"] = scene_fps_text(scene)  # image sequences carry no rate; a video keeps its own
         spt_tool.version(spt_path(context))  # a clear message when missing or too old

@@ -1,43 +1,56 @@
-"""Output properties > Paint to strokes: the painting settings and the progress bar."""
+"""Output properties > Paint to strokes: the painting settings and the progress bar.
+
+The painting options are spt's own option table (io/paint_options.py): the rows marked for the
+add-on become properties here, and a new row in spt's table appears in the panel with no edit."""
 
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
 
+from ..io import paint_options
 from .operators import LAYERING
 
 
-class SPT_PaintSettings(bpy.types.PropertyGroup):
-    source: EnumProperty(name="Source", items=[
+def _option_property(row):
+    """The Blender property of one option row (0 or empty: spt's default)."""
+    name, desc, kind = paint_options.label(row), row["help"], row["kind"]
+    if kind == "choice":
+        items = [(paint_options.enum_id(c), c.capitalize(), desc) for c in row["choices"]]
+        return EnumProperty(name=name, items=items, description=desc,
+                            default=paint_options.enum_id(row.get("default", row["choices"][0])))
+    if kind == "integer":
+        return IntProperty(name=name, default=0, min=0, max=int(row["max"]), description=desc + " (0: spt's default)")
+    if kind == "number":
+        return FloatProperty(name=name, default=0.0, min=0.0, max=float(row["max"]), description=desc + " (0: none)")
+    if kind == "flag":
+        return BoolProperty(name=name, default=False, description=desc)
+    if paint_options.is_number_text(row):
+        return IntProperty(name=name, default=int(row["default"]), min=0, description=desc)
+    if kind == "path":
+        return StringProperty(name=name, subtype='DIR_PATH' if row.get("metavar") == "DIR" else 'FILE_PATH',
+                              description=desc)
+    return StringProperty(name=name, default=row.get("default", ""), description=desc)
+
+
+OPTION_ROWS = paint_options.panel_rows(paint_options.load())
+
+_annotations = {
+    "source": EnumProperty(name="Source", items=[
         ('RENDER', "Rendered frames", "The frames the scene renders to its output path"),
         ('FILE', "File", "An image, an image sequence pattern (frame_####.png) or a video"),
-    ], default='RENDER')
-    filepath: StringProperty(name="File", subtype='FILE_PATH',
-                             description="Image, sequence pattern (####) or video to paint")
-    style: EnumProperty(name="Style", items=[
-        ('PAINTERLY', "Painterly", "Brush strokes over the picture (spt's default painter)"),
-        ('CARTOON', "Cartoon", "Flat-colour art (toon renders, cartoons): filled shapes and drawn lines, "
-                               "brush strokes only where they leave an error (spt paint --style cartoon)"),
-    ], default='PAINTERLY')
-    output: StringProperty(name="Output .spt", subtype='FILE_PATH', default="//painted.spt",
-                           description="Where spt writes the painting (empty: a temporary file)")
-    sets: IntProperty(name="Stroke sets", default=0, min=0, max=10,
-                      description="Number of stroke sets, coarse to fine: 3..10 (0: spt's default)")
-    max_strokes: IntProperty(name="Max strokes", default=0, min=0,
-                             description="Stop a frame at this many strokes (0: spt's default)")
-    target_psnr: FloatProperty(name="Target PSNR", default=0.0, min=0.0, max=99.0,
-                               description="Stop a frame when it reaches this PSNR in dB (0: none)")
-    templates: StringProperty(name="Templates", subtype='DIR_PATH',
-                              description="Folder of grayscale brush templates (empty: built-in)")
-    key_interval: IntProperty(name="Key frame interval", default=0, min=0,
-                              description="Frames between key frames (0: spt's default)")
-    roi: StringProperty(name="ROI file", subtype='FILE_PATH',
-                        description="Regions of interest painted down to the finest set: JSON "
-                              "{\"rois\":[{\"x\":..,\"y\":..,\"w\":..,\"h\":..}]}")
-    seed: IntProperty(name="Seed", default=1, min=0, description="Same seed, same strokes")
-    layering: EnumProperty(name="Layers", items=LAYERING, default='AUTO')
-    progress: FloatProperty(name="Progress", subtype='PERCENTAGE', min=0.0, max=100.0, default=0.0)
-    running: BoolProperty(default=False)
-    cancel_requested: BoolProperty(default=False)
+    ], default='RENDER'),
+    "filepath": StringProperty(name="File", subtype='FILE_PATH',
+                               description="Image, sequence pattern (####) or video to paint"),
+    "output": StringProperty(name="Output .spt", subtype='FILE_PATH', default="//painted.spt",
+                             description="Where spt writes the painting (empty: a temporary file)"),
+}
+_annotations.update({paint_options.prop_name(r): _option_property(r) for r in OPTION_ROWS})
+_annotations.update({
+    "layering": EnumProperty(name="Layers", items=LAYERING, default='AUTO'),
+    "progress": FloatProperty(name="Progress", subtype='PERCENTAGE', min=0.0, max=100.0, default=0.0),
+    "running": BoolProperty(default=False),
+    "cancel_requested": BoolProperty(default=False),
+})
+SPT_PaintSettings = type("SPT_PaintSettings", (bpy.types.PropertyGroup,), {"__annotations__": _annotations})
 
 
 class SPT_PT_paint(bpy.types.Panel):
@@ -57,16 +70,11 @@ class SPT_PT_paint(bpy.types.Panel):
         if st.source == 'FILE':
             col.prop(st, "filepath")
         col.prop(st, "output")
-        col.prop(st, "style")
-        col.prop(st, "sets")
-        col.prop(st, "max_strokes")
-        col.prop(st, "target_psnr")
-        col.prop(st, "templates")
-        col.prop(st, "key_interval")
-        roi = col.row()
-        roi.active = st.style != 'CARTOON'  # the cartoon painter paints the whole frame
-        roi.prop(st, "roi")
-        col.prop(st, "seed")
+        style = st.style.lower()
+        for r in OPTION_ROWS:
+            row = col.row()
+            row.active = paint_options.applies(r, style)  # e.g. the cartoon painter takes no ROIs
+            row.prop(st, paint_options.prop_name(r))
         col.prop(st, "layering")
         if st.running:
             row = layout.row()

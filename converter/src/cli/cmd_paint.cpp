@@ -123,16 +123,32 @@ int paint_still(const PaintCommandOptions& o) {
 
 }  // namespace
 
+int run_paint(const PaintCommandOptions& o, ShotRun* shot) {
+    std::error_code ec;
+    const bool clip = io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec);
+    switch (o.style) {
+        case job::Style::Cartoon: return shot ? paint_cartoon_shot(o, shot->metadata, shot->frames) : paint_cartoon(o);
+        case job::Style::Painterly: break;
+    }
+    if (!shot) return clip ? paint_sequence(o) : paint_still(o);
+    video::VideoPaintOptions v;
+    if (int rc = video_options(o, v); rc >= 0) return rc;
+    v.detect_cuts = shot->detect_cuts;
+    v.metadata = shot->metadata;
+    io::Progress progress(o.progress, shot->label, 0);
+    video::VideoPaintReport rep;
+    const int rc = video::run_video_paint(v, progress, &rep);
+    shot->frames = rep.frames;
+    shot->interrupted = rep.interrupted;
+    return rc;
+}
+
 int cmd_paint(int argc, char** argv) {
     for (int i = 1; i < argc; ++i)  // a farm plan's shots (plan_paint.cpp)
         if (std::string(argv[i]) == "--plan" || std::string(argv[i]).rfind("--plan=", 0) == 0) return paint_plan(argc, argv);
     PaintCommandOptions o;
     if (int rc = parse_paint_options(argc, argv, o); rc >= 0) return rc;
-    if (o.style == "cartoon") return paint_cartoon(o);
-    std::error_code ec;
-    if (io::is_sequence_pattern(o.input) || io::is_video_file(o.input) || std::filesystem::is_directory(o.input, ec))
-        return paint_sequence(o);
-    return paint_still(o);
+    return run_paint(o);
 }
 
 }  // namespace spt::cli

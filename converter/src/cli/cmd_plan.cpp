@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
-#include "cli/paint_args.hpp"
+#include "cli/plan_job.hpp"
 #include "cli/paint_options.hpp"
 #include "io/progress.hpp"
 #include "io/sequence.hpp"
@@ -42,7 +42,7 @@ int cmd_plan(int argc, char** argv) {
     po.cut_step = o.cut_step;
     po.cut_history = o.cut_history;
     po.seed = o.paint.seed;
-    po.paint_args = paint_args(o);
+    po.job = plan_job(o);
     po.spt_version = library_version();
     io::Progress progress(o.progress, "plan", 0);
     plan::PlanStats stats;

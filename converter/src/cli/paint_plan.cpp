@@ -11,7 +11,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "cli/paint_cartoon.hpp"
+#include "cli/plan_job.hpp"
 #include "plan/plan_parts.hpp"
 #include "spt/atomic_file.hpp"
 #include "spt/concat.hpp"
@@ -48,32 +48,21 @@ void remove_if_created(const std::string& path, const PathIdentity& before) {
     fs::remove(path, ec);
 }
 
-const char* mode_name(io::ProgressMode m) {
-    switch (m) {
-        case io::ProgressMode::Auto: return "auto";
-        case io::ProgressMode::Plain: return "plain";
-        case io::ProgressMode::Json: return "json";
-        case io::ProgressMode::None: return "none";
-    }
-    return "auto";
-}
-
 }  // namespace
 
-int paint_shot(const plan::Plan& p, size_t k, const std::string& output, int threads, io::ProgressMode mode) {
+int paint_shot(const plan::Plan& p, const std::string& plan_path, size_t k, const std::string& output, int threads,
+               io::ProgressMode mode) {
     const plan::Shot& s = p.shots.at(k);
-    // The shot's command line: the plan's options, its frames and its seed.
-    std::vector<std::string> args = {"paint", p.input, "-o", output};
-    args.insert(args.end(), p.paint_args.begin(), p.paint_args.end());
-    args.insert(args.end(), {"--fps", p.fps, "--frames", std::to_string(s.first) + "-" + std::to_string(s.last),
-                             "--seed", std::to_string(s.seed), "--progress", mode_name(mode)});
-    if (threads > 0) args.insert(args.end(), {"--threads", std::to_string(threads)});
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
+    // The shot's job: the plan's options, its frames and its seed.
     PaintCommandOptions o;
-    if (int rc = parse_paint_options(int(args.size()), argv.data(), o); rc >= 0)
-        return rc == 0 ? fail("the plan's paint_args ask for help") : rc;
+    if (std::string e = apply_plan_job(p, plan_path, o); !e.empty()) return fail(e);
+    o.input = p.input;
+    o.output = output;
+    o.fps = p.fps;
+    o.frames = std::to_string(s.first) + "-" + std::to_string(s.last);
+    o.paint.seed = s.seed;
+    o.progress = mode;
+    if (threads > 0) o.paint.threads = threads;
     // An interrupted or short shot keeps its finished frames in a valid file; a farm must not
     // take it for a painted shot.
     const PathIdentity before = PathIdentity::of(output);
@@ -89,23 +78,15 @@ int paint_shot(const plan::Plan& p, size_t k, const std::string& output, int thr
     auto share = [&](uint64_t bytes) {
         return std::max<uint64_t>(64, uint64_t(std::llround(double(bytes) * double(s.frames()) / double(p.frames()))));
     };
-    if (o.style == "cartoon") {
-        if (o.target_bytes > 0 && !o.target_bytes_per_second) o.target_bytes = share(o.target_bytes);
-        uint64_t frames = 0;
-        const int rc = paint_cartoon_shot(o, meta, frames);
-        return settle(rc, false, frames);
-    }
-    video::VideoPaintOptions v;
-    if (int rc = video_options(o, v); rc >= 0) return rc;
+    if (o.target_bytes > 0 && !o.target_bytes_per_second) o.target_bytes = share(o.target_bytes);
+    ShotRun run;
+    run.metadata = std::move(meta);
     // The plan placed the cuts and a shot has none inside, unless the plan left them to its
     // tasks: then the painter's detector runs on the shot's frames alone, from a fresh state.
-    v.detect_cuts = p.cut_scan == "tasks";
-    v.metadata = std::move(meta);
-    if (v.target_bytes > 0 && !v.target_bytes_per_second) v.target_bytes = share(v.target_bytes);
-    io::Progress progress(mode, "paint shot " + std::to_string(k), 0);
-    video::VideoPaintReport rep;
-    const int rc = video::run_video_paint(v, progress, &rep);
-    return settle(rc, rep.interrupted, rep.frames);
+    run.detect_cuts = p.cut_scan == "tasks";
+    run.label = "paint shot " + std::to_string(k);
+    const int rc = run_paint(o, &run);
+    return settle(rc, run.interrupted, run.frames);
 }
 
 int paint_plan(int argc, char** argv) {
@@ -134,7 +115,7 @@ int paint_plan(int argc, char** argv) {
     if (shot >= 0) {
         if (size_t(shot) >= p->shots.size())
             return a.usage_error("--shot " + std::to_string(shot) + ": the plan has shots 0-" + std::to_string(p->shots.size() - 1));
-        return paint_shot(*p, size_t(shot), out, int(threads), mode);
+        return paint_shot(*p, a.get("plan"), size_t(shot), out, int(threads), mode);
     }
     // Every shot in this process, then the join: the farm's result on one machine. The shots go to
     // a fresh folder beside the output (mkdtemp: a name nobody else chose, so no folder or
@@ -150,7 +131,7 @@ int paint_plan(int argc, char** argv) {
         char name[32];
         std::snprintf(name, sizeof name, "shot-%05zu.spt", k);
         parts.push_back((dir / name).string());
-        if (int rc = paint_shot(*p, k, parts.back(), int(threads), mode); rc != 0) {
+        if (int rc = paint_shot(*p, a.get("plan"), k, parts.back(), int(threads), mode); rc != 0) {
             fs::remove_all(dir, ec);
             return rc;
         }

@@ -341,7 +341,7 @@ Result<CartoonStill> paint_cartoon_still(const PaintJob& o) {
     std::optional<PainterlyStill> def;
     if (compares_with_default(o)) {
         PaintJob d = o;
-        d.style = "painterly";
+        d.style = Style::Painterly;
         auto trial = io::TrialOutput::create(o.output);
         if (!trial) return trial.error();
         StillTarget to;
@@ -431,7 +431,7 @@ Status paint_cartoon_sequence(const PaintJob& o, const Metadata& extra, io::Prog
     out.cartoon_bytes = out.report.bytes;
     if (!compares_with_default(o)) return {};
     PaintJob d = o;
-    d.style = "painterly";
+    d.style = Style::Painterly;
     video::VideoPaintOptions v;
     if (Status st = painterly_video_options(d, v); !st) return st;
     auto trial = io::TrialOutput::create(o.output);

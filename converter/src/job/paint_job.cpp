@@ -1,9 +1,11 @@
 #include "job/paint_job.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
 #include "io/template_loader.hpp"
+#include "job/option_table.hpp"
 #include "spt/utf8.hpp"
 #include "spt/version.hpp"
 
@@ -19,29 +21,15 @@ const char* orient_name(paint::OrientMode m) {
 }
 
 std::string PaintJob::canonical() const {
+    std::vector<const OptionRow*> ranked;
+    for (const OptionRow& r : option_rows())
+        if (r.canon_rank > 0 && r.canon) ranked.push_back(&r);
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const OptionRow* a, const OptionRow* b) { return a->canon_rank < b->canon_rank; });
     std::ostringstream s;
-    s << "sets=";
-    if (set_sizes.empty()) s << sets;
-    else
-        for (size_t i = 0; i < set_sizes.size(); ++i) s << (i ? "," : "") << set_sizes[i].width << 'x' << set_sizes[i].height;
-    s << " max-strokes=" << paint.max_strokes << " target-psnr=" << paint.target_psnr
-      << " threshold=" << paint.threshold << " lambda=" << paint.lambda << " color-step=" << paint.color_step << " temperature=" << paint.temperature
-      << " orient=" << orient_name(paint.orient) << " templates=" << (templates_dir.empty() ? "builtin" : "custom")
-      << " background=" << int(background.r) << ',' << int(background.g) << ',' << int(background.b)
-      << " rois=" << rois.size();
-    if (style != "painterly") {  // painterly files keep their bytes
-        s << " style=" << style << " outline-tolerance=" << outline_tolerance << " lines=" << (lines ? 1 : 0);
-        if (outline_smooth >= 0) s << " outline-smooth=" << outline_smooth;  // files without it keep theirs
-        if (min_region > 0) s << " min-region=" << min_region;
-        if (min_color_share > 0) s << " min-color-share=" << min_color_share;
-    }
-    // Only when not the defaults, so that the files of earlier versions keep their bytes.
-    if (color_encoding != "auto") s << " color-encoding=" << color_encoding;
-    if (alpha != "auto") s << " alpha=" << alpha;
-    if (!colorspace.empty()) s << " colorspace=" << colorspace;
-    if (!ocio_config.empty()) s << " ocio=custom";  // no paths (see templates=)
-    if (!layer.empty()) s << " layer=" << layer;
-    return s.str();
+    for (const OptionRow* r : ranked) r->canon(s, *this);
+    const std::string text = s.str();
+    return text.empty() ? text : text.substr(1);  // every row writes " key=value"
 }
 
 std::vector<std::pair<std::string, std::string>> painting_metadata(const PaintJob& o) {

@@ -16,6 +16,12 @@
 
 namespace spt::job {
 
+// The painters a job can use (--style).
+enum class Style : uint8_t { Painterly, Cartoon };
+const char* style_name(Style s);  // "painterly", "cartoon"
+inline constexpr unsigned style_bit(Style s) { return 1u << unsigned(s); }
+inline constexpr unsigned kAllStyles = 3;
+
 // A region of interest as given on the command line or in a --roi-file (frames inclusive;
 // a still uses frame 0).
 struct RoiSpec {
@@ -26,7 +32,7 @@ struct RoiSpec {
 struct PaintJob {
     std::string input;
     std::string output;
-    std::string style = "painterly";      // --style painterly|cartoon
+    Style style = Style::Painterly;       // --style painterly|cartoon
     double outline_tolerance = 0;         // --outline-tolerance PX (cartoon): 0 = the default
     double outline_smooth = -1;           // --outline-smooth PX (cartoon): -1 = the default
     int min_region = 0;                   // --min-region PX (cartoon): 0 = the default
@@ -71,7 +77,8 @@ struct PaintJob {
     int cut_history = 4;                  // spt plan --cut-history N
 
     // The options that shape the painting, canonically spelt (for the painter.options metadata):
-    // no paths and no thread count, so that the file bytes do not depend on them.
+    // no paths and no thread count, so that the file bytes do not depend on them. Written by
+    // the option table's rows (option_table.hpp).
     std::string canonical() const;
 };
 

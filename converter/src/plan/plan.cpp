@@ -7,7 +7,6 @@
 
 #include "io/json.hpp"
 #include "plan/bounded_file.hpp"
-#include "plan/plan_args.hpp"
 #include "spt/atomic_file.hpp"
 #include "spt_json/json.hpp"
 
@@ -27,8 +26,19 @@ void write_body(io::JsonWriter& j, const Plan& p, bool with_id) {
         j.kv("cut_scan", p.cut_scan).kv("cut_step", p.cut_step).kv("cut_history", p.cut_history);
     j.key("cuts").arr();
     for (long c : p.cuts) j.integer(c);
-    j.end().key("paint_args").arr();
-    for (const auto& a : p.paint_args) j.str(a);
+    j.end().key("job").obj();
+    for (const JobOption& o : p.job) {
+        j.key(o.name);
+        if (o.flag) {
+            j.boolean(true);
+        } else if (o.list) {
+            j.arr();
+            for (const std::string& v : o.values) j.str(v);
+            j.end();
+        } else {
+            j.str(o.values.empty() ? std::string() : o.values.front());
+        }
+    }
     j.end().key("shots").arr();
     for (const Shot& s : p.shots) {
         j.obj().kv("index", uint64_t(s.index)).kv("first", int64_t(s.first)).kv("last", int64_t(s.last))
@@ -84,6 +94,39 @@ struct Fields {
     }
 };
 
+// A job's option names are spelt as on the command line ("max-strokes"); which of them a task
+// may take is the option table's to say when the task reads its job (job/plan_job.hpp).
+bool option_name(const std::string& n) {
+    if (n.empty() || n.size() > 64 || n[0] < 'a' || n[0] > 'z') return false;
+    return n.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") == std::string::npos;
+}
+
+Status read_job(const json::Value& job, Fields& f, std::vector<JobOption>& out) {
+    for (const json::Member& m : job.members) {
+        const std::string& name = m.first;
+        const json::Value& v = m.second;
+        if (!option_name(name))
+            return make_error(Code::InvalidArgument, f.at(v) + "\"job\" key '" + name + "' is not an option name");
+        JobOption o;
+        o.name = name;
+        if (v.type == json::Type::Bool && v.boolean) {
+            o.flag = true;
+        } else if (v.is_string()) {
+            o.values.push_back(v.text);
+        } else if (v.type == json::Type::Array) {
+            o.list = true;
+            for (const json::Value& x : v.items) {
+                if (!x.is_string()) return make_error(Code::InvalidArgument, f.at(x) + "\"job\" option '" + name + "' holds strings");
+                o.values.push_back(x.text);
+            }
+        } else {
+            return make_error(Code::InvalidArgument, f.at(v) + "\"job\" option '" + name + "' must be true, a string or strings");
+        }
+        out.push_back(std::move(o));
+    }
+    return {};
+}
+
 }  // namespace
 
 std::string to_json(const Plan& p, bool with_id) {
@@ -114,7 +157,8 @@ Result<Plan> parse_plan(const std::string& text, const std::string& src) {
         return make_error(Code::InvalidArgument, src + ": \"format\" is '" + format + "', not 'spt-plan'");
     if (f.integer(root, "version", 0, 1000000, v) && v != kPlanVersion)
         return make_error(Code::Unsupported, src + ": plan version " + std::to_string(v) + "; this spt reads version " +
-                                                 std::to_string(kPlanVersion));
+                                                 std::to_string(kPlanVersion) + ": plan again with this spt (spt plan IN -o " +
+                                                 src + " and the options the plan was made with)");
     f.text(root, "id", p.id);
     f.text(root, "spt_version", p.spt_version);
     f.text(root, "input", p.input);
@@ -149,11 +193,8 @@ Result<Plan> parse_plan(const std::string& text, const std::string& src) {
             if (!x.is_number()) return make_error(Code::InvalidArgument, f.at(x) + "\"cuts\" holds frame numbers");
             p.cuts.push_back(std::strtol(x.text.c_str(), nullptr, 10));
         }
-    if (const json::Value* a = f.need(root, "paint_args", json::Type::Array))
-        for (const json::Value& x : a->items) {
-            if (!x.is_string()) return make_error(Code::InvalidArgument, f.at(x) + "\"paint_args\" holds strings");
-            p.paint_args.push_back(x.text);
-        }
+    if (const json::Value* job = f.need(root, "job", json::Type::Object))
+        if (Status st = read_job(*job, f, p.job); !st) return st.error();
     if (const json::Value* shots = f.need(root, "shots", json::Type::Array)) {
         for (const json::Value& s : shots->items) {
             if (!s.is_object()) return make_error(Code::InvalidArgument, f.at(s) + "a shot is an object");
@@ -189,7 +230,6 @@ Result<Plan> parse_plan(const std::string& text, const std::string& src) {
         return make_error(Code::InvalidArgument, src + ": \"input\" '" + p.input + "' is not a path");
     if (p.fps.empty() || p.fps.find_first_not_of("0123456789./") != std::string::npos)
         return make_error(Code::InvalidArgument, src + ": \"fps\" '" + p.fps + "' is not a frame rate");
-    if (Status c = check_paint_args(p.paint_args, src); !c) return c.error();
     if (p.id != compute_id(p))
         return make_error(Code::InvalidArgument, src + ": \"id\" is not the plan's checksum: the plan was edited by hand "
                                                      "(write a new one with spt plan)");

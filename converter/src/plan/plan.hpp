@@ -10,7 +10,18 @@
 
 namespace spt::plan {
 
-inline constexpr int kPlanVersion = 1;
+// Version 2 stores the job (the painting options by name); version 1 stored them as argv
+// ("paint_args") and is refused with a word on planning again.
+inline constexpr int kPlanVersion = 2;
+
+// One option of the job every task paints (the option table's painting rows,
+// converter/src/job/option_table.hpp): a flag, one value, or a repeatable option's values.
+struct JobOption {
+    std::string name;
+    std::vector<std::string> values;  // a flag: none
+    bool flag = false;
+    bool list = false;                // written as an array even with one value
+};
 
 struct Shot {
     size_t index = 0;
@@ -40,7 +51,7 @@ struct Plan {
     std::string cut_scan;
     int cut_step = 1;
     int cut_history = 0;            // the sampled scan's verdict history (0 for "full")
-    std::vector<std::string> paint_args;  // spt paint options every task passes (README.md)
+    std::vector<JobOption> job;     // the options every task paints with (README.md)
     std::vector<Shot> shots;
     uint64_t frames() const { return last >= first ? uint64_t(last - first + 1) : 0; }
 };

@@ -34,7 +34,7 @@ Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* 
     p.seed = o.seed;
     p.keyframe_interval = o.keyframe_interval;
     p.max_task_frames = o.max_task_frames;
-    p.paint_args = o.paint_args;
+    p.job = o.job;
     // The frame rate: --fps, else the container's, else 24.
     auto set_fps = [&](bool has, Rational container) -> Status {
         Rational fps{24, 1};

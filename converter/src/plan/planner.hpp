@@ -31,7 +31,7 @@ struct PlanOptions {
     int keyframe_interval = 100;
     long max_task_frames = 240;
     uint64_t seed = 1;
-    std::vector<std::string> paint_args;
+    std::vector<JobOption> job;
     std::string spt_version;
 };
 
