@@ -10,7 +10,8 @@ build="${SPT_BUILD_DIR:-build}"
 
 core_pkgs=(build-essential cmake ninja-build pkg-config git python3
            libopenimageio-dev openimageio-tools libopencv-dev libopenexr-dev
-           libcli11-dev nlohmann-json3-dev libpugixml-dev libpng-dev zlib1g-dev libyaml-dev)
+           libcli11-dev nlohmann-json3-dev libpugixml-dev libpng-dev zlib1g-dev libyaml-dev
+           help2man)                    # spt.1, the man page of the Debian package
 test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy ccache
            blender libegl1 libegl-mesa0 ffmpeg chromium inkscape xz-utils
            mmdebstrap time              # Blender 4.3 and 5.2 roots (tests/blender/blender_root.sh)
@@ -63,7 +64,7 @@ case "$mode" in
     ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 900
     # The fuzz corpora once more, through the instrumented targets (ASan, UBSan fatal): ctest
     # above replays them in the plain build, this one also sees memory errors and UB.
-    REPLAY=1 bench/fuzz_all.sh 0 "${build}-fuzz"
+    REPLAY=1 tests/fuzz/fuzz_all.sh 0 "${build}-fuzz"
     ;;
   *)
     echo "usage: ./setup.sh demo|test" >&2; exit 2 ;;

@@ -22,7 +22,7 @@ trap 'rm -rf "$work"' EXIT
 [ -x "$spt" ] || { echo "no $spt: build spt_cli first" >&2; exit 1; }
 # The add-on's file layer needs numpy: Debian's python3 (python3-numpy) before any other on PATH.
 py=python3; [ -x /usr/bin/python3 ] && py=/usr/bin/python3
-"$py" "$here/blender_bench_make.py" "$work/bench.stored.spt" "$frames" "$strokes" "$share"
+"$py" "$here/tools/blender_bench_make.py" "$work/bench.stored.spt" "$frames" "$strokes" "$share"
 # The file users have: range-coded by spt pack.
 "$spt" pack "$work/bench.stored.spt" -o "$work/bench.spt" >/dev/null
 ls -l "$work/bench.stored.spt" "$work/bench.spt" | awk '{print "file:", $NF, $5, "bytes"}'

@@ -19,7 +19,7 @@ sequence also painted from the .avi itself, --frames 0-(FRAMES-1)); for x265
 (-preset slow) and AV1 (libaom, -cpu-used 4), yuv420p and yuv444p, the CRF whose PSNR is
 closest to the cartoon's from above, and (yuv420p) the CRF whose stream is closest to the
 cartoon's bytes from below, both searched by bisection; for potrace per colour layer
-(bench/potrace_layers.py: the frame quantized to the palette of the cartoon's polygons and lines
+(bench/tools/potrace_layers.py: the frame quantized to the palette of the cartoon's polygons and lines
 in that frame, stacked and not), the SVG bytes, plain and gzip'd, and its PSNR once rasterized by
 librsvg (ffmpeg's svg decoder). x265 bytes are the raw HEVC stream, AV1 the raw OBU stream (no
 container), spt the whole .spt file (header, templates and metadata included), potrace the sum
@@ -43,7 +43,7 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "tools"))
 import potrace_layers  # noqa: E402
 
 
@@ -220,7 +220,7 @@ def fills_rows(spt, cartoon_spt, src, base, threads):
 
 
 def potrace_rows(spt, cartoon_spt, src, ref, base, n):
-    """potrace per colour layer (bench/potrace_layers.py) on the source frames, with the palette
+    """potrace per colour layer (bench/tools/potrace_layers.py) on the source frames, with the palette
     of the cartoon's polygons and lines in the same frame; rasterized by librsvg (ffmpeg's svg decoder).
     Returns rows (label, SVG bytes, PSNR, SSIM) stacked and not, bytes gzip'd too."""
     shutil.rmtree(base + "-svg", ignore_errors=True)

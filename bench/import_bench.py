@@ -15,6 +15,7 @@ six-decimal floats whose precision the rendering does not need, so it has no suc
 """
 import collections, json, os, re, statistics, subprocess, sys, tempfile, time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "tools"))  # foreign_samples
 from foreign_samples import entropy_bits, parse_args, xz_bytes as xz
 
 def order0_bytes(json_path):

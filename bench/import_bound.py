@@ -22,6 +22,7 @@ against the tool's own PNG): close enough to predict from.
 """
 import collections, json, math, os, subprocess, sys, tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "tools"))  # foreign_samples
 from foreign_samples import entropy_bits, parse_args, xz_bytes
 
 try:

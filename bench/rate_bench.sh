@@ -11,7 +11,7 @@ CODEC=$BUILD/bench/rate_codec
 SPT=$BUILD/bin/spt
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-source "$ROOT/bench/rate_images.sh" "$TMP"
+source "$ROOT/bench/tools/rate_images.sh" "$TMP"
 LAMBDAS=${LAMBDAS:-8,16,24,48,96}
 
 echo "== 1. bytes at 28 dB, coding 1 and 2 (the painter's defaults at 28 dB: lambda 24, colour step 12)"

@@ -14,7 +14,7 @@ MEDIA=${SPT_MEDIA:-$ROOT/../shared/media}
 CODEC=$BUILD/bench/rate_codec
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-source "$ROOT/bench/rate_images.sh" "$TMP"
+source "$ROOT/bench/tools/rate_images.sh" "$TMP"
 echo "command: $CODEC IMAGE --target-psnr 28 --lambda L --color-step Q"
 for img in "${IMAGES[@]}"; do
   for q in $STEPS; do

@@ -25,7 +25,7 @@ set_of rse16   g16/0-rectangle.png:0-rectangle.png g16/1-soft-round.png:1-soft-r
 set_of rseb16  g16/0-rectangle.png:0-rectangle.png g16/1-soft-round.png:1-soft-round.png g16/1-soft-round.png:2-ellipse.png g16/2-bristle.png:3-bristle.png
 set_of rsbd16  g16/0-rectangle.png:0-rectangle.png g16/1-soft-round.png:1-soft-round.png g16/2-bristle.png:2-bristle.png g16/3-dry-brush.png:3-dry-brush.png
 SETS=${SETS:-"four60 four32 four16 analytic rse16 rseb16"}
-source "$ROOT/bench/rate_images.sh" "$TMP"
+source "$ROOT/bench/tools/rate_images.sh" "$TMP"
 echo "command: $CODEC IMAGE --target-psnr 28 --lambda $LAMBDA --color-step $STEP --templates SET"
 for img in "${IMAGES[@]}"; do
   for s in $SETS; do

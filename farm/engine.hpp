@@ -36,6 +36,9 @@ struct FarmJob {
 // What submit() returned: the engine's ids of the task group and of the join.
 struct Submitted {
     std::string engine, tasks_id, join_id;
+    // The plan's state folder: the engine's commands write their stderr into its logs/ (set by
+    // submit() and by farm_status(); not stored in job.json, which sits in that folder).
+    std::string state_dir;
 };
 
 enum class QueueState { Pending, Running };

@@ -7,11 +7,11 @@
 #include <sstream>
 
 #include "farm/process.hpp"
-#include "io/json.hpp"
 #include "plan/bounded_file.hpp"
 #include "plan/plan_parts.hpp"
 #include "spt/atomic_file.hpp"
 #include "spt_json/json.hpp"
+#include "spt_json/write.hpp"
 
 namespace spt::farm {
 
@@ -84,15 +84,10 @@ std::string join_script(const SubmitOptions& o, const std::string& state, const 
 
 std::string job_json(const Submitted& ids, const std::string& output, double submitted,
                      const std::vector<size_t>& painting, const std::vector<size_t>& reused) {
-    io::JsonWriter j(true);
-    j.obj().kv("engine", ids.engine).kv("tasks_id", ids.tasks_id).kv("join_id", ids.join_id).kv("output", output)
-        .kv("submitted_ms", uint64_t(submitted * 1000.0));  // unix time; whole ms keep the JSON number exact
-    j.key("painting").arr();
-    for (size_t k : painting) j.uinteger(k);
-    j.end().key("reused").arr();
-    for (size_t k : reused) j.uinteger(k);
-    j.end().end();
-    return j.text() + "\n";
+    const json::Doc j = {{"engine", ids.engine}, {"tasks_id", ids.tasks_id}, {"join_id", ids.join_id}, {"output", output},
+                         {"submitted_ms", uint64_t(submitted * 1000.0)},  // unix time; whole ms keep the JSON number exact
+                         {"painting", painting}, {"reused", reused}};
+    return json::dump(j, 2) + "\n";
 }
 
 }  // namespace
@@ -241,6 +236,7 @@ Result<FarmStatus> farm_status(const std::string& plan_path, Engine* engine) {
         return v && v->is_string() ? v->text : std::string();
     };
     st.ids.engine = text("engine");
+    st.ids.state_dir = st.state_dir;
     st.ids.tasks_id = text("tasks_id");
     st.ids.join_id = text("join_id");
     st.output = text("output");

@@ -45,8 +45,14 @@ std::string array_list(std::vector<uint64_t> shots) {
 }
 
 // The cluster's MaxArraySize (array indices must be below it), or 0 when scontrol cannot say.
-uint64_t max_array_size() {
-    Result<std::string> out = run_capture({"scontrol", "show", "config"});
+// Runs a Slurm client; its stderr goes to the state folder's logs/ (process.hpp).
+Result<std::string> run(const std::vector<std::string>& argv, const std::string& state_dir) {
+    if (state_dir.empty()) return make_error(Code::InvalidArgument, argv.at(0) + ": no state folder for its stderr");
+    return run_capture(argv, stderr_file_for(state_dir, argv.at(0)));
+}
+
+uint64_t max_array_size(const std::string& state_dir) {
+    Result<std::string> out = run({"scontrol", "show", "config"}, state_dir);
     if (!out) return 0;
     std::istringstream in(*out);
     for (std::string line; std::getline(in, line);) {
@@ -65,6 +71,7 @@ public:
     Result<Submitted> submit(const FarmJob& job) override {
         Submitted ids;
         ids.engine = name();
+        ids.state_dir = job.state_dir;
         std::vector<std::string> common;
         if (!job.partition.empty()) common.push_back("--partition=" + job.partition);
         if (!job.tasks.empty()) {
@@ -81,7 +88,7 @@ public:
                 shots.push_back(t.shot);
             }
             const uint64_t last = *std::max_element(shots.begin(), shots.end());
-            if (const uint64_t limit = max_array_size(); limit > 0 && last >= limit)
+            if (const uint64_t limit = max_array_size(job.state_dir); limit > 0 && last >= limit)
                 return make_error(Code::InvalidArgument,
                                   "the plan's shot " + std::to_string(last) + " needs a Slurm array index below this " +
                                       "cluster's MaxArraySize (" + std::to_string(limit) + "): raise MaxArraySize in " +
@@ -94,7 +101,7 @@ public:
             argv.insert(argv.end(), common.begin(), common.end());
             argv.insert(argv.end(), job.extra.begin(), job.extra.end());
             argv.push_back(script);
-            Result<std::string> out = run_capture(argv);
+            Result<std::string> out = run(argv, ids.state_dir);
             if (!out) return out.error();
             ids.tasks_id = trim(*out);
         }
@@ -110,10 +117,10 @@ public:
         argv.insert(argv.end(), common.begin(), common.end());
         argv.insert(argv.end(), job.extra.begin(), job.extra.end());
         argv.push_back(join_script);
-        Result<std::string> out = run_capture(argv);
+        Result<std::string> out = run(argv, ids.state_dir);
         if (!out) {
             // Best effort: the join failed to submit, and the tasks it would join are cancelled.
-            if (!ids.tasks_id.empty()) (void)run_capture({"scancel", ids.tasks_id});
+            if (!ids.tasks_id.empty()) (void)run({"scancel", ids.tasks_id}, ids.state_dir);
             return out.error();
         }
         ids.join_id = trim(*out);
@@ -124,8 +131,7 @@ public:
         std::map<size_t, QueueState> m;
         if (ids.tasks_id.empty()) return m;
         // %K: array index; %t: compact state. A job id Slurm has forgotten is not an error.
-        Result<std::string> out = run_capture({"squeue", "--noheader", "--array", "--jobs=" + ids.tasks_id,
-                                               "--format=%K %t"});
+        Result<std::string> out = run({"squeue", "--noheader", "--array", "--jobs=" + ids.tasks_id, "--format=%K %t"}, ids.state_dir);
         if (!out) {
             if (out.error().message.find("Invalid job id") != std::string::npos) return m;
             return out.error();
@@ -143,7 +149,7 @@ public:
 
     Result<bool> join_queued(const Submitted& ids) override {
         if (ids.join_id.empty()) return false;
-        Result<std::string> out = run_capture({"squeue", "--noheader", "--jobs=" + ids.join_id, "--format=%t"});
+        Result<std::string> out = run({"squeue", "--noheader", "--jobs=" + ids.join_id, "--format=%t"}, ids.state_dir);
         if (!out) {
             if (out.error().message.find("Invalid job id") != std::string::npos) return false;
             return out.error();
@@ -156,7 +162,7 @@ public:
         if (!ids.tasks_id.empty()) argv.push_back(ids.tasks_id);
         if (!ids.join_id.empty()) argv.push_back(ids.join_id);
         if (argv.size() == 1) return {};
-        Result<std::string> out = run_capture(argv);
+        Result<std::string> out = run(argv, ids.state_dir);
         if (!out) return out.error();
         return {};
     }

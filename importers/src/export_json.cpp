@@ -1,91 +1,86 @@
 // The JSON stroke list writer. Output is deterministic and exact: Q4 values are written as
-// pixels with at most four decimals (k/16 has a finite decimal expansion), so importing the
-// output gives back the same values, and the same .spt bytes.
-#include <cstdio>
+// pixels with at most four decimals (k/16 has a finite decimal expansion, and nlohmann-json
+// prints a double with the fewest digits that give it back), so importing the output gives back
+// the same values, and the same .spt bytes. The document is built as a JSON value and printed
+// with one stroke a line (json::dump_layout), the layout this file has always had.
+#include <cstdint>
+#include <string_view>
 
 #include "spt_import/export.hpp"
 #include "spt_import/codec.hpp"
-#include "spt_json/json.hpp"
+#include "spt_json/write.hpp"
 
 namespace spt::import {
 
 namespace {
 
-void q4(std::string& o, int64_t v) {
-    if (v < 0) { o += '-'; v = -v; }
-    o += std::to_string(v / 16);
-    if (int64_t f = v % 16) {
-        char buf[8];
-        std::snprintf(buf, sizeof buf, "%04d", int(f * 625));
-        std::string s(buf);
-        while (s.back() == '0') s.pop_back();
-        o += '.';
-        o += s;
-    }
+using json::Doc;
+
+// A Q4 fixed-point value (1/16 pixel) in pixels: a whole number as an integer ("3", not "3.0").
+Doc q4(int64_t v) {
+    if (v % 16 == 0) return v / 16;
+    return double(v) / 16.0;
 }
 
 // Colour encoding 1 (`linear`) writes the 16-bit half codes (exact); encoding 0 the 8-bit values.
-void color(std::string& o, Rgba8 c, bool linear) {
-    if (linear) {
-        o += "\"color\": [" + std::to_string(code16(c, 0)) + ", " + std::to_string(code16(c, 1)) + ", " + std::to_string(code16(c, 2)) +
-             ", " + std::to_string(c.a) + "]";
-        return;
-    }
-    o += "\"color\": [" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ", " + std::to_string(c.a) + "]";
+Doc color(Rgba8 c, bool linear) {
+    if (linear) return Doc::array({code16(c, 0), code16(c, 1), code16(c, 2), c.a});
+    return Doc::array({c.r, c.g, c.b, c.a});
 }
 
-void stroke(std::string& o, const Stroke& s, bool linear) {
+Doc stroke(const Stroke& s, bool linear) {
+    Doc o = Doc::object();
     switch (s.kind) {
         case StrokeKind::Stamp: {
             const auto& t = s.stamp;
-            o += "{\"type\": \"stamp\", \"set\": " + std::to_string(t.set) + ", \"template\": " + std::to_string(t.tmpl) +
-                 ", \"orient\": " + std::to_string(t.orient) + ", \"x\": ";
-            q4(o, t.x); o += ", \"y\": "; q4(o, t.y); o += ", ";
-            color(o, t.color, linear);
-            o += "}";
+            o["type"] = "stamp";
+            o["set"] = t.set;
+            o["template"] = t.tmpl;
+            o["orient"] = t.orient;
+            o["x"] = q4(t.x);
+            o["y"] = q4(t.y);
+            o["color"] = color(t.color, linear);
             break;
         }
         case StrokeKind::Affine: {
             const auto& a = s.affine;
-            o += "{\"type\": \"affine\", \"template\": " + std::to_string(a.tmpl) + ", \"tx\": ";
-            q4(o, a.tx); o += ", \"ty\": "; q4(o, a.ty);
-            o += ", \"a\": "; q4(o, a.a); o += ", \"b\": "; q4(o, a.b);
-            o += ", \"c\": "; q4(o, a.c); o += ", \"d\": "; q4(o, a.d); o += ", ";
-            color(o, a.color, linear);
-            o += "}";
+            o["type"] = "affine";
+            o["template"] = a.tmpl;
+            o["tx"] = q4(a.tx);
+            o["ty"] = q4(a.ty);
+            o["a"] = q4(a.a);
+            o["b"] = q4(a.b);
+            o["c"] = q4(a.c);
+            o["d"] = q4(a.d);
+            o["color"] = color(a.color, linear);
             break;
         }
         case StrokeKind::Curve: {
-            o += "{\"type\": \"curve\", ";
-            color(o, s.curve.color, linear);
-            if (s.curve.supersample) o += ", \"supersample\": " + std::to_string(s.curve.supersample);
-            o += ", \"points\": [";
-            for (size_t i = 0; i < s.curve.points.size(); ++i) {
-                const auto& p = s.curve.points[i];
-                if (i) o += ", ";
-                o += "[";
-                q4(o, p.x); o += ", "; q4(o, p.y); o += ", "; q4(o, p.width);
-                o += "]";
-            }
-            o += "]}";
+            o["type"] = "curve";
+            o["color"] = color(s.curve.color, linear);
+            if (s.curve.supersample) o["supersample"] = s.curve.supersample;
+            Doc& pts = o["points"] = Doc::array();
+            for (const auto& p : s.curve.points) pts.push_back(Doc::array({q4(p.x), q4(p.y), q4(p.width)}));
             break;
         }
         case StrokeKind::Polygon: {
             const auto& pg = s.polygon;
-            o += "{\"type\": \"polygon\", ";
-            color(o, pg.color, linear);
-            if (pg.supersample) o += ", \"supersample\": " + std::to_string(pg.supersample);
-            o += ", \"points\": [";
-            for (size_t i = 0; i < pg.points.size(); ++i) {
-                if (i) o += ", ";
-                o += "[";
-                q4(o, pg.points[i].x); o += ", "; q4(o, pg.points[i].y);
-                o += "]";
-            }
-            o += "]}";
+            o["type"] = "polygon";
+            o["color"] = color(pg.color, linear);
+            if (pg.supersample) o["supersample"] = pg.supersample;
+            Doc& pts = o["points"] = Doc::array();
+            for (const auto& p : pg.points) pts.push_back(Doc::array({q4(p.x), q4(p.y)}));
             break;
         }
     }
+    return o;
+}
+
+// One line per template, frame and stroke; everything else of them on that line.
+bool broken(const Doc& node, std::string_view key, int depth) {
+    if (depth == 0) return true;
+    if (depth == 1) return key == "templates" || key == "frames";
+    return depth == 3 && key == "strokes" && !node.empty();
 }
 
 }  // namespace
@@ -100,89 +95,67 @@ std::string export_json(const Document& doc) {
     // Version 3 only for format 1.3 canvases (alpha, colour encoding 1).
     const bool v3 = !h.plain_color();
     const bool linear = h.color == ColorEncoding::LinearHalf;
-    std::string o = std::string("{\n  \"format\": \"spt-strokes\",\n  \"version\": ") + (v3 ? "3" : polygons ? "2" : "1") + ",\n";
+    Doc o = Doc::object();
+    o["format"] = "spt-strokes";
+    o["version"] = v3 ? 3 : polygons ? 2 : 1;
     const unsigned bg[3] = {linear ? unsigned(h.background.r << 8 | h.background_lo.r) : h.background.r,
                             linear ? unsigned(h.background.g << 8 | h.background_lo.g) : h.background.g,
                             linear ? unsigned(h.background.b << 8 | h.background_lo.b) : h.background.b};
-    o += "  \"canvas\": {\"width\": " + std::to_string(h.width) + ", \"height\": " + std::to_string(h.height);
+    Doc& canvas = o["canvas"] = Doc::object();
+    canvas["width"] = h.width;
+    canvas["height"] = h.height;
     if (v3) {
-        o += ", \"color_encoding\": \"";
-        o += color_encoding_name(h.color);
-        o += std::string("\", \"alpha\": ") + (h.alpha ? "true" : "false");
+        canvas["color_encoding"] = color_encoding_name(h.color);
+        canvas["alpha"] = h.alpha;
     }
-    if (h.curve_grid) o += ", \"curve_grid\": true";
-    o += ", \"background\": [" + std::to_string(bg[0]) + ", " + std::to_string(bg[1]) + ", " + std::to_string(bg[2]) +
-         "], \"fps\": [" + std::to_string(h.fps.num) + ", " + std::to_string(h.fps.den) + "]},\n";
-    o += "  \"sets\": [";
-    for (size_t i = 0; i < h.sets.size(); ++i)
-        o += (i ? ", [" : "[") + std::to_string(h.sets[i].width) + ", " + std::to_string(h.sets[i].height) + "]";
-    o += "],\n  \"orientations\": [";
-    for (size_t i = 0; i < h.orientations.size(); ++i)
-        o += (i ? ", [" : "[") + std::to_string(h.orientations[i].cos_q14) + ", " + std::to_string(h.orientations[i].sin_q14) + "]";
-    o += "],\n  \"templates\": [";
-    for (size_t i = 0; i < doc.info.templates.size(); ++i) {
-        const Template& t = doc.info.templates[i];
-        o += i ? ",\n    " : "\n    ";
-        o += "{\"kind\": \"";
-        o += template_kind_name(t.kind);
-        o += "\"";
-        if (!t.name.empty()) { o += ", \"name\": "; json::append_string(o, t.name); }
-        if (t.supersample) o += ", \"supersample\": " + std::to_string(t.supersample);
-        if (t.kind == TemplateKind::Bitmap)
-            o += ", \"width\": " + std::to_string(t.width) + ", \"height\": " + std::to_string(t.height) + ", \"base64\": \"" +
-                 base64_encode(t.pixels.data(), t.pixels.size()) + "\"";
-        o += "}";
-    }
-    o += "\n  ],\n";
-    if (!doc.info.metadata.empty()) {
-        o += "  \"metadata\": {";
-        for (size_t i = 0; i < doc.info.metadata.size(); ++i) {
-            o += i ? ", " : "";
-            json::append_string(o, doc.info.metadata[i].first);
-            o += ": ";
-            json::append_string(o, doc.info.metadata[i].second);
+    if (h.curve_grid) canvas["curve_grid"] = true;
+    canvas["background"] = Doc::array({bg[0], bg[1], bg[2]});
+    canvas["fps"] = Doc::array({h.fps.num, h.fps.den});
+    Doc& sets = o["sets"] = Doc::array();
+    for (const auto& s : h.sets) sets.push_back(Doc::array({s.width, s.height}));
+    Doc& orients = o["orientations"] = Doc::array();
+    for (const auto& r : h.orientations) orients.push_back(Doc::array({r.cos_q14, r.sin_q14}));
+    Doc& templates = o["templates"] = Doc::array();
+    for (const Template& t : doc.info.templates) {
+        Doc e = Doc::object();
+        e["kind"] = template_kind_name(t.kind);
+        if (!t.name.empty()) e["name"] = t.name;
+        if (t.supersample) e["supersample"] = t.supersample;
+        if (t.kind == TemplateKind::Bitmap) {
+            e["width"] = t.width;
+            e["height"] = t.height;
+            e["base64"] = base64_encode(t.pixels.data(), t.pixels.size());
         }
-        o += "},\n";
+        templates.push_back(std::move(e));
+    }
+    if (!doc.info.metadata.empty()) {
+        // Appended as pairs, not assigned by key: a key the file repeats is written as often as
+        // the file has it, as it always was.
+        Doc& meta = o["metadata"] = Doc::object();
+        for (const auto& [k, v] : doc.info.metadata) meta.get_ref<Doc::object_t&>().push_back({k, v});
     }
     if (!doc.info.rois.empty()) {
-        o += "  \"rois\": [";
-        for (size_t i = 0; i < doc.info.rois.size(); ++i) {
-            const Roi& r = doc.info.rois[i];
-            o += (i ? ", [" : "[") + std::to_string(r.first_frame) + ", " + std::to_string(r.last_frame) + ", " + std::to_string(r.x) +
-                 ", " + std::to_string(r.y) + ", " + std::to_string(r.w) + ", " + std::to_string(r.h) + "]";
-        }
-        o += "],\n";
+        Doc& rois = o["rois"] = Doc::array();
+        for (const Roi& r : doc.info.rois) rois.push_back(Doc::array({r.first_frame, r.last_frame, r.x, r.y, r.w, r.h}));
     }
-    o += "  \"frames\": [";
-    for (size_t f = 0; f < doc.frames.size(); ++f) {
-        const Frame& fr = doc.frames[f];
-        o += f ? ",\n    {" : "\n    {";
-        o += fr.type == FrameType::Key ? "\"type\": \"key\"" : "\"type\": \"inter\"";
+    Doc& frames = o["frames"] = Doc::array();
+    for (const Frame& fr : doc.frames) {
+        Doc f = Doc::object();
+        f["type"] = fr.type == FrameType::Key ? "key" : "inter";
         if (fr.type == FrameType::Inter) {
-            o += ", \"removed\": [";
-            for (size_t i = 0; i < fr.removed.size(); ++i) o += (i ? ", " : "") + std::to_string(fr.removed[i]);
-            o += "]";
+            f["removed"] = fr.removed;
             if (!fr.motion.empty()) {
-                o += ", \"motion\": {\"block_size\": " + std::to_string(fr.motion.block_size) + ", \"vectors\": [";
-                for (size_t i = 0; i < fr.motion.vectors.size(); ++i) {
-                    o += i ? ", [" : "[";
-                    q4(o, fr.motion.vectors[i].first);
-                    o += ", ";
-                    q4(o, fr.motion.vectors[i].second);
-                    o += "]";
-                }
-                o += "]}";
+                Doc& m = f["motion"] = Doc::object();
+                m["block_size"] = fr.motion.block_size;
+                Doc& vec = m["vectors"] = Doc::array();
+                for (const auto& v : fr.motion.vectors) vec.push_back(Doc::array({q4(v.first), q4(v.second)}));
             }
         }
-        o += ", \"strokes\": [";
-        for (size_t i = 0; i < fr.added.size(); ++i) {
-            o += i ? ",\n      " : "\n      ";
-            stroke(o, fr.added[i], linear);
-        }
-        o += fr.added.empty() ? "]}" : "\n    ]}";
+        Doc& strokes = f["strokes"] = Doc::array();
+        for (const Stroke& s : fr.added) strokes.push_back(stroke(s, linear));
+        frames.push_back(std::move(f));
     }
-    o += "\n  ]\n}\n";
-    return o;
+    return json::dump_layout(o, broken) + "\n";
 }
 
 }  // namespace spt::import

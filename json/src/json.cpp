@@ -1,6 +1,7 @@
 // spt::json on nlohmann-json: a SAX handler that builds the line-remembering tree and enforces
 // spt's limits and rules while nlohmann's lexer and parser check the grammar.
 #include "spt_json/json.hpp"
+#include "spt_json/write.hpp"
 
 #include <cstdint>
 #include <iterator>
@@ -222,26 +223,7 @@ Result<Value> parse(std::string_view text, const std::string& source, const Pars
     return std::move(b.root);
 }
 
-std::string quote(std::string_view s) {
-    std::string q = nlohmann::json(std::string(s)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-    // DEL and the C1 controls (U+0080..U+009F, which a terminal may act on as on ESC) escaped
-    // too: the same string to a parser, and nothing a terminal showing the JSON acts on.
-    std::string out;
-    for (size_t i = 0; i < q.size(); ++i) {
-        const uint8_t c = uint8_t(q[i]);
-        const bool c1 = c == 0xC2 && i + 1 < q.size() && uint8_t(q[i + 1]) <= 0x9F;
-        if (c != 0x7F && !c1) {
-            out += q[i];
-            continue;
-        }
-        const uint8_t code = c1 ? uint8_t(q[++i]) : c;
-        static const char* hex = "0123456789abcdef";
-        out += "\\u00";
-        out += hex[code >> 4];
-        out += hex[code & 15];
-    }
-    return out;
-}
+std::string quote(std::string_view s) { return dump(Doc(std::string(s))); }
 
 void append_string(std::string& out, std::string_view s) { out += quote(s); }
 

@@ -5,7 +5,8 @@
 #include <thread>
 
 #include "io/progress.hpp"
-#include "io/json.hpp"
+#include "spt_json/json.hpp"
+#include "spt_json/write.hpp"
 #include "io_json_check.hpp"
 
 using namespace spt::io;
@@ -88,15 +89,15 @@ TEST(IoProgress, NoneAndAutoInPipesPrintNothing) {
 }
 
 TEST(IoJson, QuotesAndNumbers) {
-    EXPECT_EQ(json_quote("a\"b\\c\n"), "\"a\\\"b\\\\c\\n\"");
-    EXPECT_EQ(json_quote("\xff"), "\"\xEF\xBF\xBD\"");
-    EXPECT_EQ(json_number(3), "3");
-    EXPECT_EQ(json_number(0.5), "0.5");
-    EXPECT_EQ(json_number(1.0 / 0.0), "null");
-    JsonWriter w(true);
-    w.obj().kv("a", 1).key("b").arr().integer(1).str("x").end().key("c").obj().end().end();
+    EXPECT_EQ(spt::json::quote("a\"b\\c\n"), "\"a\\\"b\\\\c\\n\"");
+    EXPECT_EQ(spt::json::quote("\xff"), "\"\xEF\xBF\xBD\"");
+    EXPECT_EQ(spt::json::dump(spt::json::number(3)), "3");
+    EXPECT_EQ(spt::json::dump(spt::json::number(0.5)), "0.5");
+    EXPECT_EQ(spt::json::dump(spt::json::number(1.0 / 0.0)), "null");
+    const spt::json::Doc d = {{"a", 1}, {"b", {1, "x"}}, {"c", spt::json::Doc::object()}};
+    const std::string text = spt::json::dump(d, 2);
     Json j;
     std::string err;
-    ASSERT_TRUE(JsonParser::parse(w.text(), j, &err)) << err << w.text();
+    ASSERT_TRUE(JsonParser::parse(text, j, &err)) << err << text;
     EXPECT_EQ(j["b"][1].str, "x");
 }

@@ -177,13 +177,13 @@ TEST(PaintColorFlags, FarmPlansCarryThem) {
     std::string plan;  // without the layout's white space
     for (char c : slurp(d.file("plan.json")))
         if (c != ' ' && c != '\n') plan += c;
-    for (const std::string& w : {std::string("\"--color-encoding\",\"linear\""), std::string("\"--alpha\",\"on\""),
-                                 std::string("\"--colorspace\",\"ACEScg\""), "\"--ocio\",\"" + cfg + "\"",
-                                 std::string("\"--layer\",\"ViewLayer.Combined\"")})
+    for (const std::string& w : {std::string("\"color-encoding\":\"linear\""), std::string("\"alpha\":\"on\""),
+                                 std::string("\"colorspace\":\"ACEScg\""), "\"ocio\":\"" + cfg + "\"",
+                                 std::string("\"layer\":\"ViewLayer.Combined\"")})
         EXPECT_NE(plan.find(w), std::string::npos) << w << " in " << plan;
     auto plain = run_spt(d, {"plan", seq, "-o", d.file("plain.json"), "--frames", "1-3", "--progress", "none"});
     ASSERT_EQ(plain.code, 0) << plain.err;
     const std::string p2 = slurp(d.file("plain.json"));
-    for (const char* w : {"--color-encoding", "--alpha", "--colorspace", "--ocio", "--layer"})
+    for (const char* w : {"\"color-encoding\"", "\"alpha\"", "\"colorspace\"", "\"ocio\"", "\"layer\""})
         EXPECT_EQ(p2.find(w), std::string::npos) << w;
 }

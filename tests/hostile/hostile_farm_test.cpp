@@ -146,3 +146,32 @@ TEST(HostileFarm, TheArrayListIsRangesAndMaxArraySizeIsNamedUpFront) {
     EXPECT_NE(refused.err.find("MaxArraySize (1)"), std::string::npos) << refused.err;
     EXPECT_FALSE(fs::exists(e.file("bin/sbatch.args"))) << "nothing was submitted";
 }
+
+// Issue 35: sbatch ran through popen with hand-quoted arguments and its stderr in a fixed /tmp
+// name. Now it is started with an argv; a plan in a folder whose name a shell would act on is
+// submitted as it is, and sbatch's refusal is reported with its message and the file in the
+// state folder that holds its stderr.
+TEST(HostileFarm, SbatchGetsTheArgvAsItIsAndItsStderrIsReported) {
+    TempDir d;
+    fake_slurm_recording(d, 1001);
+    fs::create_directories(d.file("a b 'c' $(touch pwned)"));
+    const std::string plan = d.file("a b 'c' $(touch pwned)/p.json");
+    ASSERT_FALSE(tiny_plan(d, plan).empty());
+    auto r = run_spt(d, {"farm", "slurm", plan, "-o", d.file("out.spt")});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(slurp(d.file("bin/sbatch.args")).find(d.file("a b 'c' $(touch pwned)/p.farm/slurm_tasks.sh")), std::string::npos);
+    EXPECT_FALSE(fs::exists(d.file("pwned")));
+
+    TempDir e;
+    fake_slurm(e);
+    write_text(e.file("bin/sbatch"), "#!/bin/sh\necho 'sbatch: error: Batch job submission failed: Invalid account' >&2\nexit 1\n");
+    const std::string plan2 = e.file("p.json");
+    ASSERT_FALSE(tiny_plan(e, plan2).empty());
+    auto refused = run_spt(e, {"farm", "slurm", plan2, "-o", e.file("out.spt")});
+    EXPECT_EQ(refused.code, 1);
+    const std::string log = e.file("p.farm/logs/sbatch.stderr");
+    EXPECT_NE(refused.err.find("sbatch failed (exit 1): sbatch: error: Batch job submission failed: Invalid account"),
+              std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find(log), std::string::npos) << refused.err;
+    EXPECT_EQ(slurp(log), "sbatch: error: Batch job submission failed: Invalid account\n");
+}

@@ -19,7 +19,7 @@ TEST(HostilePlan, AJobMayHoldOnlyPainterOptions) {
     const std::string text = tiny_plan(d, plan);
     ASSERT_FALSE(text.empty());
     const std::string victim = d.file("victim.txt");
-    const std::string v = spt::io::json_quote(victim);
+    const std::string v = spt::json::quote(victim);
     const std::vector<std::pair<std::string, std::string>> crafted = {
         {"output", "\"output\": " + v},       {"o", "\"o\": " + v},
         {"plan", "\"plan\": " + v},           {"shot", "\"shot\": \"1\""},

@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "converter/cli_test_util.hpp"
-#include "io/json.hpp"
+#include "spt_json/json.hpp"
 
 namespace spt_test {
 

@@ -8,7 +8,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "io/image_io.hpp"
-#include "io/json.hpp"
+#include "spt_json/write.hpp"
 #include "io/metrics.hpp"
 #include "io/sequence.hpp"
 
@@ -29,10 +29,7 @@ std::string psnr_text(double p) {
 }
 
 // PSNR as JSON: identical images have no finite PSNR; null says so.
-void json_psnr(io::JsonWriter& j, const char* key, double p) {
-    if (std::isinf(p)) j.key(key).null();
-    else j.kv(key, p);
-}
+json::Doc json_psnr(double p) { return std::isinf(p) ? json::Doc(nullptr) : json::number(p); }
 
 struct Pair {
     long frame;
@@ -123,27 +120,27 @@ int cmd_compare(int argc, char** argv) {
     const double mean_ssim = ssim_sum / double(rows.size());
 
     if (json) {
-        io::JsonWriter j(true);
-        j.obj().kv("a", a).kv("b", b);
+        json::Doc j = {{"a", a}, {"b", b}};
         if (!seq) {
             const auto& m = rows[0].m;
-            j.kv("width", w).kv("height", h).kv("mse", m.mse);
-            json_psnr(j, "psnr", m.psnr);
-            j.kv("ssim", m.ssim).kv("identical", m.mse == 0);
+            j["width"] = w;
+            j["height"] = h;
+            j["mse"] = json::number(m.mse);
+            j["psnr"] = json_psnr(m.psnr);
+            j["ssim"] = json::number(m.ssim);
+            j["identical"] = m.mse == 0;
         } else {
-            j.kv("count", uint64_t(rows.size())).key("frames").arr();
-            for (const auto& r : rows) {
-                j.obj().kv("frame", int64_t(r.frame)).kv("mse", r.m.mse);
-                json_psnr(j, "psnr", r.m.psnr);
-                j.kv("ssim", r.m.ssim).end();
-            }
-            j.end();
-            json_psnr(j, "mean_psnr", mean_psnr);
-            json_psnr(j, "min_psnr", lowest_psnr);
-            j.kv("mean_ssim", mean_ssim).kv("min_ssim", lowest_ssim);
+            j["count"] = uint64_t(rows.size());
+            json::Doc& frames = j["frames"] = json::Doc::array();
+            for (const auto& r : rows)
+                frames.push_back({{"frame", int64_t(r.frame)}, {"mse", json::number(r.m.mse)}, {"psnr", json_psnr(r.m.psnr)},
+                                  {"ssim", json::number(r.m.ssim)}});
+            j["mean_psnr"] = json_psnr(mean_psnr);
+            j["min_psnr"] = json_psnr(lowest_psnr);
+            j["mean_ssim"] = json::number(mean_ssim);
+            j["min_ssim"] = json::number(lowest_ssim);
         }
-        j.end();
-        std::printf("%s\n", j.text().c_str());
+        std::printf("%s\n", json::dump(j, 2).c_str());
     } else if (!seq) {
         std::printf("PSNR %s dB  SSIM %.5f  (%ux%u, MSE %.4f)\n", psnr_text(rows[0].m.psnr).c_str(),
                     rows[0].m.ssim, w, h, rows[0].m.mse);

@@ -13,7 +13,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "farm/farm_job.hpp"
-#include "io/json.hpp"
+#include "spt_json/write.hpp"
 
 namespace spt::cli {
 
@@ -113,19 +113,17 @@ int farm_status(int argc, char** argv) {
     Result<farm::FarmStatus> st = farm::farm_status(a.pos("PLAN.json"));
     if (!st) return fail(st.error().message);
     if (a.has("json")) {
-        io::JsonWriter j(true);
-        j.obj().kv("plan", st->plan.id).kv("engine", st->ids.engine).kv("tasks_id", st->ids.tasks_id)
-            .kv("join_id", st->ids.join_id).kv("output", st->output).kv("joined", st->joined)
-            .kv("done", uint64_t(st->count(farm::ShotState::Done))).kv("running", uint64_t(st->count(farm::ShotState::Running)))
-            .kv("pending", uint64_t(st->count(farm::ShotState::Pending))).kv("failed", uint64_t(st->count(farm::ShotState::Failed)))
-            .kv("frames_painted", st->frames_painted).kv("frames_to_paint", st->frames_to_paint)
-            .kv("elapsed_seconds", st->elapsed).kv("frames_per_second", st->frames_per_second());
-        j.key("shots").arr();
+        json::Doc j = {{"plan", st->plan.id}, {"engine", st->ids.engine}, {"tasks_id", st->ids.tasks_id},
+                       {"join_id", st->ids.join_id}, {"output", st->output}, {"joined", st->joined},
+                       {"done", uint64_t(st->count(farm::ShotState::Done))}, {"running", uint64_t(st->count(farm::ShotState::Running))},
+                       {"pending", uint64_t(st->count(farm::ShotState::Pending))}, {"failed", uint64_t(st->count(farm::ShotState::Failed))},
+                       {"frames_painted", st->frames_painted}, {"frames_to_paint", st->frames_to_paint},
+                       {"elapsed_seconds", json::number(st->elapsed)}, {"frames_per_second", json::number(st->frames_per_second())}};
+        json::Doc& shots = j["shots"] = json::Doc::array();
         for (size_t k = 0; k < st->shots.size(); ++k)
-            j.obj().kv("index", uint64_t(k)).kv("state", farm::shot_state_name(st->shots[k])).kv("attempts", st->attempts[k])
-                .kv("reused", bool(st->reused[k])).kv("frames", st->plan.shots[k].frames()).end();
-        j.end().end();
-        std::printf("%s\n", j.text().c_str());
+            shots.push_back({{"index", uint64_t(k)}, {"state", farm::shot_state_name(st->shots[k])}, {"attempts", st->attempts[k]},
+                             {"reused", bool(st->reused[k])}, {"frames", st->plan.shots[k].frames()}});
+        std::printf("%s\n", json::dump(j, 2).c_str());
         return 0;
     }
     std::printf("plan %s on %s (tasks %s, join %s)\n", st->plan.id.c_str(), st->ids.engine.c_str(),

@@ -5,7 +5,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "io/json.hpp"
+#include "spt_json/write.hpp"
 #include "io/spt_file.hpp"
 #include "spt/color.hpp"
 #include "spt/concat.hpp"
@@ -140,79 +140,71 @@ int cmd_info(int argc, char** argv) {
                             uint16_t(h.background.b << 8 | h.background_lo.b)};
 
     if (json) {
-        io::JsonWriter j(true);
-        j.obj().kv("file", path).kv("file_bytes", sec.total);
-        j.kv("format_version", std::to_string(h.version_major) + "." + std::to_string(h.version_minor));
-        j.kv("complete", r.complete()).kv("has_index", r.has_index());
-        j.key("canvas").obj().kv("width", h.width).kv("height", h.height).end();
-        j.key("fps").obj().kv("num", h.fps.num).kv("den", h.fps.den).kv("value", fps).end();
-        if (h.frame_count == kUnknownFrameCount) j.key("frame_count").null();
-        else j.kv("frame_count", h.frame_count);
-        j.kv("frames_found", uint64_t(frames.size()));
-        j.kv("first_frame_number", first_number);
-        j.kv("duration_seconds", fps > 0 ? double(frames.size()) / fps : 0.0);
-        j.kv("color", color);
-        j.key("color_encoding").obj().kv("id", uint32_t(h.color)).kv("name", encoding_text).end();
-        j.kv("alpha", h.alpha);
-        j.kv("curve_grid", h.curve_grid);
-        j.key("background").arr().integer(h.background.r).integer(h.background.g).integer(h.background.b).end();
+        using json::Doc;
+        Doc j = {{"file", path}, {"file_bytes", sec.total}};
+        j["format_version"] = std::to_string(h.version_major) + "." + std::to_string(h.version_minor);
+        j["complete"] = r.complete();
+        j["has_index"] = r.has_index();
+        j["canvas"] = {{"width", h.width}, {"height", h.height}};
+        j["fps"] = {{"num", h.fps.num}, {"den", h.fps.den}, {"value", json::number(fps)}};
+        j["frame_count"] = h.frame_count == kUnknownFrameCount ? Doc(nullptr) : Doc(h.frame_count);
+        j["frames_found"] = uint64_t(frames.size());
+        j["first_frame_number"] = first_number;
+        j["duration_seconds"] = json::number(fps > 0 ? double(frames.size()) / fps : 0.0);
+        j["color"] = color;
+        j["color_encoding"] = {{"id", uint32_t(h.color)}, {"name", encoding_text}};
+        j["alpha"] = h.alpha;
+        j["curve_grid"] = h.curve_grid;
+        j["background"] = Doc::array({h.background.r, h.background.g, h.background.b});
         if (linear) {
-            j.key("background_codes").arr();
-            for (uint16_t c : bg_codes) j.uinteger(c);
-            j.end().key("background_linear").arr();
-            for (uint16_t c : bg_codes) j.num(double(half_to_float(c)));
-            j.end();
+            j["background_codes"] = bg_codes;
+            Doc& lin = j["background_linear"] = Doc::array();
+            for (uint16_t c : bg_codes) lin.push_back(json::number(double(half_to_float(c))));
         }
-        j.key("sets").arr();
-        for (const auto& s : h.sets) j.obj().kv("width", uint32_t(s.width)).kv("height", uint32_t(s.height)).end();
-        j.end().key("orientations").arr();
+        Doc& sets = j["sets"] = Doc::array();
+        for (const auto& s : h.sets) sets.push_back({{"width", uint32_t(s.width)}, {"height", uint32_t(s.height)}});
+        Doc& orients = j["orientations"] = Doc::array();
         for (const auto& o : h.orientations)
-            j.obj().kv("cos_q14", int(o.cos_q14)).kv("sin_q14", int(o.sin_q14)).kv("degrees", degrees(o)).end();
-        j.end().key("templates").arr();
+            orients.push_back({{"cos_q14", int(o.cos_q14)}, {"sin_q14", int(o.sin_q14)}, {"degrees", json::number(degrees(o))}});
+        Doc& templates = j["templates"] = Doc::array();
         for (const auto& t : info.templates)
-            j.obj().kv("kind", template_kind_name(t.kind)).kv("name", t.name).kv("width", uint32_t(t.width))
-                .kv("height", uint32_t(t.height)).end();
-        j.end().key("metadata").obj();
+            templates.push_back({{"kind", template_kind_name(t.kind)}, {"name", t.name}, {"width", uint32_t(t.width)},
+                                 {"height", uint32_t(t.height)}});
+        Doc& metadata = j["metadata"] = Doc::object();
         std::map<std::string, std::string> meta(info.metadata.begin(), info.metadata.end());
         for (const auto& [k, v] : info.metadata) meta[k] = v;  // last value of a repeated key
-        for (const auto& [k, v] : meta) j.kv(k, v);
-        j.end().key("rois").arr();
+        for (const auto& [k, v] : meta) metadata[k] = v;
+        Doc& rois = j["rois"] = Doc::array();
         for (const auto& q : info.rois)
-            j.obj().kv("first_frame", q.first_frame).kv("last_frame", q.last_frame).kv("x", q.x).kv("y", q.y)
-                .kv("w", q.w).kv("h", q.h).end();
-        j.end().key("key_frames").arr();
-        for (auto k : keys) j.uinteger(k);
-        j.end().key("strokes").obj().kv("added", added).kv("removed", removed);
+            rois.push_back({{"first_frame", q.first_frame}, {"last_frame", q.last_frame}, {"x", q.x}, {"y", q.y},
+                            {"w", q.w}, {"h", q.h}});
+        j["key_frames"] = keys;
+        Doc& strokes = j["strokes"] = {{"added", added}, {"removed", removed}};
         if (fields) {
-            j.key("kinds").obj();
-            for (size_t k = 0; k < 4; ++k) j.kv(kKindNames[k], kinds[k]);
-            j.end();
+            Doc& k = strokes["kinds"] = Doc::object();
+            for (size_t i = 0; i < 4; ++i) k[kKindNames[i]] = kinds[i];
         }
-        if (list) j.kv("max_live", max_live);
-        j.end();
-        j.key("bytes").obj().kv("total", sec.total).kv("header", sec.header).kv("frames", sec.frames)
-            .kv("strokes", sec.strokes).kv("motion", sec.motion).kv("framing", sec.framing).kv("tail", sec.tail).end();
+        if (list) strokes["max_live"] = max_live;
+        j["bytes"] = {{"total", sec.total}, {"header", sec.header}, {"frames", sec.frames}, {"strokes", sec.strokes},
+                      {"motion", sec.motion}, {"framing", sec.framing}, {"tail", sec.tail}};
         if (fields) {
-            j.key("fields").obj();
-            for (size_t i = 0; i < kFieldCount; ++i) j.kv(field_name(Field(i)), fs.bits[i] / 8.0);
-            j.end();
+            Doc& fj = j["fields"] = Doc::object();
+            for (size_t i = 0; i < kFieldCount; ++i) fj[field_name(Field(i))] = json::number(fs.bits[i] / 8.0);
         }
-        j.key("warnings").arr();
-        for (const auto& w : r.warnings()) j.str(io::describe_error(path, w));
-        j.end();
+        Doc& warnings = j["warnings"] = Doc::array();
+        for (const auto& w : r.warnings()) warnings.push_back(io::describe_error(path, w));
         if (list) {
-            j.key("frame_list").arr();
+            Doc& fl = j["frame_list"] = Doc::array();
             for (size_t i = 0; i < frames.size(); ++i) {
                 const auto& f = frames[i];
-                j.obj().kv("index", f.index).kv("number", uint64_t(first_number) + f.index).kv("type", f.type == FrameType::Key ? "key" : "inter")
-                    .kv("coding", coding_name(f.coding)).kv("offset", f.offset)
-                    .kv("bytes", f.chunk_bytes).kv("stroke_bytes", f.stroke_bytes).kv("motion_bytes", f.motion_bytes)
-                    .kv("added", f.added).kv("removed", f.removed).kv("live", live[i]).end();
+                fl.push_back({{"index", f.index}, {"number", uint64_t(first_number) + f.index},
+                              {"type", f.type == FrameType::Key ? "key" : "inter"}, {"coding", coding_name(f.coding)},
+                              {"offset", f.offset}, {"bytes", f.chunk_bytes}, {"stroke_bytes", f.stroke_bytes},
+                              {"motion_bytes", f.motion_bytes}, {"added", f.added}, {"removed", f.removed},
+                              {"live", live[i]}});
             }
-            j.end();
         }
-        j.end();
-        std::printf("%s\n", j.text().c_str());
+        std::printf("%s\n", json::dump(j, 2).c_str());
         return 0;
     }
 

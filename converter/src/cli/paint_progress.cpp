@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "io/json.hpp"
+#include "spt_json/write.hpp"
 
 namespace spt::cli {
 
@@ -21,14 +21,16 @@ PaintProgress::PaintProgress(io::ProgressMode mode, uint64_t max_strokes, double
 void PaintProgress::json(const char* event, uint64_t strokes, int set, double psnr, int ok, const std::string& detail) {
     const double done = target_ > 0 ? std::min(psnr, target_) : double(strokes);
     const double total = target_ > 0 ? target_ : double(max_strokes_);
-    io::JsonWriter j;
-    j.obj().kv("event", event).kv("task", "paint").kv("done", done).kv("total", total)
-        .kv("strokes", strokes).kv("psnr", psnr).kv("elapsed", secs(std::chrono::steady_clock::now() - start_));
-    if (set >= 0) j.kv("set", set).kv("sets", sets_);
-    if (ok >= 0) j.kv("ok", ok != 0);
-    if (!detail.empty()) j.kv("detail", detail);
-    j.end();
-    std::fputs(j.text().c_str(), stdout);
+    json::Doc j = {{"event", event}, {"task", "paint"}, {"done", json::number(done)}, {"total", json::number(total)},
+                   {"strokes", strokes}, {"psnr", json::number(psnr)},
+                   {"elapsed", json::number(secs(std::chrono::steady_clock::now() - start_))}};
+    if (set >= 0) {
+        j["set"] = set;
+        j["sets"] = sets_;
+    }
+    if (ok >= 0) j["ok"] = ok != 0;
+    if (!detail.empty()) j["detail"] = detail;
+    std::fputs(json::dump(j).c_str(), stdout);
     std::fputc('\n', stdout);
     std::fflush(stdout);
 }

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/json.hpp"
+#include "spt_json/write.hpp"
 
 namespace spt::io {
 
@@ -76,20 +76,15 @@ void Progress::update(double done, const std::string& detail) {
 void Progress::emit_json(const char* event, double done, const std::string& detail, int ok) {
     const double el = seconds(Clock::now() - start_);
     const double rate = el > 0 ? done / el : 0;
-    JsonWriter j;
-    j.obj().kv("event", event).kv("task", task_).kv("done", done);
-    if (total_ > 0) {
-        j.kv("total", total_).kv("percent", std::min(100.0, 100.0 * done / total_));
-    } else {
-        j.key("total").null().key("percent").null();
-    }
-    j.kv("elapsed", el);
-    if (total_ > 0 && rate > 0) j.kv("eta", std::max(0.0, (total_ - done) / rate));
-    else j.key("eta").null();
-    j.kv("fps", rate).kv("detail", detail);
-    if (ok >= 0) j.kv("ok", ok != 0);
-    j.end();
-    std::fputs(j.text().c_str(), stdout);
+    json::Doc j = {{"event", event}, {"task", task_}, {"done", json::number(done)}};
+    j["total"] = total_ > 0 ? json::number(total_) : nullptr;
+    j["percent"] = total_ > 0 ? json::number(std::min(100.0, 100.0 * done / total_)) : nullptr;
+    j["elapsed"] = json::number(el);
+    j["eta"] = total_ > 0 && rate > 0 ? json::number(std::max(0.0, (total_ - done) / rate)) : nullptr;
+    j["fps"] = json::number(rate);
+    j["detail"] = detail;
+    if (ok >= 0) j["ok"] = ok != 0;
+    std::fputs(json::dump(j).c_str(), stdout);
     std::fputc('\n', stdout);
     std::fflush(stdout);  // the Blender add-on reads a pipe line by line
 }

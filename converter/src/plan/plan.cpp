@@ -5,49 +5,46 @@
 #include <cstring>
 #include <filesystem>
 
-#include "io/json.hpp"
 #include "plan/bounded_file.hpp"
 #include "spt/atomic_file.hpp"
 #include "spt_json/json.hpp"
+#include "spt_json/write.hpp"
 
 namespace spt::plan {
 
 namespace {
 
-void write_body(io::JsonWriter& j, const Plan& p, bool with_id) {
-    j.obj().kv("format", "spt-plan").kv("version", p.version);
-    if (with_id) j.kv("id", p.id);
-    j.kv("spt_version", p.spt_version).kv("input", p.input);
-    j.key("frames").obj().kv("first", int64_t(p.first)).kv("last", int64_t(p.last)).kv("count", p.frames()).end();
-    j.key("canvas").obj().kv("width", p.width).kv("height", p.height).end();
-    j.kv("fps", p.fps).kv("seed", std::to_string(p.seed));
-    j.kv("keyframe_interval", p.keyframe_interval).kv("max_task_frames", int64_t(p.max_task_frames));
-    if (!p.cut_scan.empty())
-        j.kv("cut_scan", p.cut_scan).kv("cut_step", p.cut_step).kv("cut_history", p.cut_history);
-    j.key("cuts").arr();
-    for (long c : p.cuts) j.integer(c);
-    j.end().key("job").obj();
+json::Doc body(const Plan& p, bool with_id) {
+    json::Doc j = json::Doc::object();
+    j["format"] = "spt-plan";
+    j["version"] = p.version;
+    if (with_id) j["id"] = p.id;
+    j["spt_version"] = p.spt_version;
+    j["input"] = p.input;
+    j["frames"] = {{"first", int64_t(p.first)}, {"last", int64_t(p.last)}, {"count", p.frames()}};
+    j["canvas"] = {{"width", p.width}, {"height", p.height}};
+    j["fps"] = p.fps;
+    j["seed"] = std::to_string(p.seed);
+    j["keyframe_interval"] = p.keyframe_interval;
+    j["max_task_frames"] = int64_t(p.max_task_frames);
+    if (!p.cut_scan.empty()) {
+        j["cut_scan"] = p.cut_scan;
+        j["cut_step"] = p.cut_step;
+        j["cut_history"] = p.cut_history;
+    }
+    j["cuts"] = p.cuts;
+    json::Doc& job = j["job"] = json::Doc::object();
     for (const JobOption& o : p.job) {
-        j.key(o.name);
-        if (o.flag) {
-            j.boolean(true);
-        } else if (o.list) {
-            j.arr();
-            for (const std::string& v : o.values) j.str(v);
-            j.end();
-        } else {
-            j.str(o.values.empty() ? std::string() : o.values.front());
-        }
+        if (o.flag) job[o.name] = true;
+        else if (o.list) job[o.name] = o.values;
+        else job[o.name] = o.values.empty() ? std::string() : o.values.front();
     }
-    j.end().key("shots").arr();
-    for (const Shot& s : p.shots) {
-        j.obj().kv("index", uint64_t(s.index)).kv("first", int64_t(s.first)).kv("last", int64_t(s.last))
-            .kv("frames", s.frames()).kv("seed", std::to_string(s.seed)).kv("starts_at_cut", s.starts_at_cut);
-        j.key("key_frames").arr();
-        for (long k : s.key_frames) j.integer(k);
-        j.end().end();
-    }
-    j.end().end();
+    json::Doc& shots = j["shots"] = json::Doc::array();
+    for (const Shot& s : p.shots)
+        shots.push_back({{"index", uint64_t(s.index)}, {"first", int64_t(s.first)}, {"last", int64_t(s.last)},
+                         {"frames", s.frames()}, {"seed", std::to_string(s.seed)}, {"starts_at_cut", s.starts_at_cut},
+                         {"key_frames", s.key_frames}});
+    return j;
 }
 
 struct Fields {
@@ -130,9 +127,7 @@ Status read_job(const json::Value& job, Fields& f, std::vector<JobOption>& out) 
 }  // namespace
 
 std::string to_json(const Plan& p, bool with_id) {
-    io::JsonWriter j(true);
-    write_body(j, p, with_id);
-    return j.text() + "\n";
+    return json::dump(body(p, with_id), 2) + "\n";
 }
 
 std::string compute_id(const Plan& p) {

@@ -21,10 +21,14 @@
 //   spt/result.hpp   Status, Result<T>, Error: every call that can fail says why
 //   spt/version.hpp  library and format versions
 //   spt/color.hpp    colour encoding 1 (scene-linear half floats): SPEC.md 8.6's conversions
-//   spt/utf8.hpp     UTF-8 validation for the text the format carries
+//   spt/utf8.hpp     UTF-8 validation for the text the format carries (the Writer refuses
+//                    metadata that is not UTF-8; a tool checks its input with the same rule)
 // Supported API as well, included on their own (tools, not every reader needs them):
 //   spt/concat.hpp       join .spt files without re-coding (SPEC.md 9.6; farm shots)
-//   spt/atomic_file.hpp  outputs that appear only when complete and follow no symlink
+//   spt/atomic_file.hpp  outputs that appear only when complete and follow no symlink (the
+//                        Writer's own; the converter, importers and farm write through it too)
+// Every header here is standard C++20 with no compiler extension (tests/format checks it with
+// g++ and clang++ -Wpedantic -Werror, and that this list names every header).
 //
 // Errors are values: a Result<T> is either a T or an Error (code, message naming the file,
 // frame and byte offset); nothing throws on bad input. A Reader checks every count against

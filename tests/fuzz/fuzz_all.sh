@@ -2,7 +2,7 @@
 # Fuzzes every parser target for SECONDS each (default 60) with libFuzzer, ASan and UBSan (UB is
 # fatal), over instrumented builds of libspt, the importers and the converter's ROI parser, and
 # prints one line per target: executions, coverage (edges, features), corpus size and findings.
-#   bench/fuzz_all.sh [seconds] [build_dir] [target...]
+#   tests/fuzz/fuzz_all.sh [seconds] [build_dir] [target...]
 # Environment: RUNS=N stops a target after N executions (whichever comes first with SECONDS);
 # MERGE=1 merges the inputs that reached new coverage into the committed corpus (tests/...).
 # REPLAY=1 runs each committed corpus once through the instrumented target (no fuzzing; what
@@ -10,7 +10,7 @@
 # Findings (crash-, leak-, timeout-, oom- reproducers) are left in BUILD/findings/.
 set -eu
 secs=${1:-60}
-src=$(cd "$(dirname "$0")/.." && pwd)
+src=$(cd "$(dirname "$0")/../.." && pwd)
 build=${2:-$src/build-fuzz}
 [ $# -ge 2 ] && shift 2 || shift $#
 CC=clang CXX=clang++ cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -4,7 +4,7 @@ import argparse, collections, lzma, math, os
 
 def parse_args(doc):
     """--spt and --media, defaults relative to bench/; returns (args, foreign folder)."""
-    here = os.path.dirname(os.path.abspath(__file__))
+    here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")  # bench/
     ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--spt", default=os.path.join(here, "..", "build", "bin", "spt"))
     ap.add_argument("--media", default=os.path.join(here, "..", "..", "shared", "media"))

@@ -1,5 +1,5 @@
 # Sourced by the rate benches (rate_bench.sh, rate_sweep.sh, rate_templates.sh) as
-# `source bench/rate_images.sh DIR`: the images they paint. Sets STILLS (foreign/coffee-256.png,
+# `source bench/tools/rate_images.sh DIR`: the images they paint. Sets STILLS (foreign/coffee-256.png,
 # then stills/*), FRAMES (frame 30 of each clip in video/ at 1280x720, written into DIR) and
 # IMAGES (both); MEDIA names the shared media folder.
 STILLS=("$MEDIA"/foreign/coffee-256.png "$MEDIA"/stills/*)

@@ -10,7 +10,7 @@ import random
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "tests", "blender"))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tests", "blender"))
 import spt_samples  # noqa: E402
 from spt_grease_pencil.io.model import INTER, KEY, Frame, Motion  # noqa: E402
 from spt_grease_pencil.io.writer import write_stored  # noqa: E402
