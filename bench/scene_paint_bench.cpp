@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "bench_timing.hpp"
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "paint/scene_paint.hpp"
 #include "spt/color.hpp"
 #include "spt/writer.hpp"

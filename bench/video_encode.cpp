@@ -13,7 +13,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "video/frame_source.hpp"
+#include "frames/frame_source.hpp"
 #include "video/video_encoder.hpp"
 
 using namespace spt;

@@ -1,5 +1,5 @@
 // What a farm plan's tasks decode of one video file (issue 37): the file split into T tasks of
-// consecutive frames, each read by the painter's video reader (video/video_reader.hpp) from its
+// consecutive frames, each read by the painter's video reader (frames/video_reader.hpp) from its
 // own range, as `spt paint --plan` does. Prints the frames decoded over the plan against the
 // frames (the goal: at most 1.1x) and the time.
 //
@@ -16,8 +16,8 @@
 #include <opencv2/core.hpp>
 
 #include "io/sequence.hpp"
-#include "video/ffmpeg_video.hpp"
-#include "video/video_reader.hpp"
+#include "frames/ffmpeg_video.hpp"
+#include "frames/video_reader.hpp"
 
 int main(int argc, char** argv) {
     namespace fs = std::filesystem;

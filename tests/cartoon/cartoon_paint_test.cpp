@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include <opencv2/imgproc.hpp>
-#include "video/ffmpeg_video.hpp"
+#include "frames/ffmpeg_video.hpp"
 
 #include "cartoon/cartoon_paint.hpp"
 #include "converter/cli_test_util.hpp"

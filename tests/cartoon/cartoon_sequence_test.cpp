@@ -13,7 +13,7 @@
 #include "converter/cli_test_util.hpp"
 #include "io/image_io.hpp"
 #include "spt/spt.hpp"
-#include "video/frame_source.hpp"
+#include "frames/frame_source.hpp"
 
 namespace {
 

@@ -20,8 +20,8 @@
 #include "ocio_test_config.hpp"
 #include "temp_dir.hpp"
 #include "io/color_config.hpp"
-#include "io/exr_layers.hpp"
-#include "io/scene_image.hpp"
+#include "frames/exr_layers.hpp"
+#include "frames/scene_image.hpp"
 
 namespace fs = std::filesystem;
 using spt::io::read_scene_image;

@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "cli_test_util.hpp"
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "spt/color.hpp"
 #include "spt/reader.hpp"
 

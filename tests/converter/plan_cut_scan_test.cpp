@@ -12,7 +12,7 @@
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
-#include "video/ffmpeg_video.hpp"
+#include "frames/ffmpeg_video.hpp"
 
 #include "io/image_io.hpp"
 #include "io/progress.hpp"

@@ -12,7 +12,7 @@
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
 #include "plan/gray_frames.hpp"
-#include "video/frame_source.hpp"
+#include "frames/frame_source.hpp"
 
 namespace {
 

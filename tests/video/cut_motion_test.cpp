@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "synthetic.hpp"
-#include "video/cut_detect.hpp"
+#include "frames/cut_detect.hpp"
 #include "video/motion.hpp"
 #include "video/video_paint.hpp"
 

@@ -13,7 +13,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "spt/color.hpp"
 #include "spt/reader.hpp"
 #include "video/video_encoder.hpp"

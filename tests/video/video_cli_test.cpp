@@ -22,7 +22,7 @@
 #include "spt/reader.hpp"
 #include "spt/render.hpp"
 #include "synthetic.hpp"
-#include "video/ffmpeg_writer.hpp"
+#include "io/ffmpeg_writer.hpp"
 
 using namespace spt;
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-// Video input through FFmpeg's libraries (converter/src/video/ffmpeg_video.hpp): exact seek
+// Video input through FFmpeg's libraries (converter/src/frames/ffmpeg_video.hpp): exact seek
 // against sequential decoding for every frame, variable frame rate, rotation, 10-bit, the three
 // alpha containers, damaged files, and the decoding a farm task's range costs. The files are
 // made here with the `ffmpeg` command, small and synthetic.
@@ -21,10 +21,10 @@
 #include <opencv2/core.hpp>
 
 #include "io/sequence.hpp"
-#include "video/ffmpeg_video.hpp"
-#include "video/video_reader.hpp"
-#include "video/video_scene.hpp"
-#include "io/scene_image.hpp"
+#include "frames/ffmpeg_video.hpp"
+#include "frames/video_reader.hpp"
+#include "frames/video_scene.hpp"
+#include "frames/scene_image.hpp"
 #include "video_input_util.hpp"
 
 using namespace spt;

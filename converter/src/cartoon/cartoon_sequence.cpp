@@ -13,15 +13,15 @@
 #include "cartoon/inter_frame.hpp"
 #include "cartoon/memory_bound.hpp"
 #include "cartoon/retrace_outline.hpp"
+#include "frames/frame_rate.hpp"
+#include "frames/frame_source.hpp"
+#include "frames/stop_signal.hpp"
+#include "paint/frame_seed.hpp"
 #include "paint/rate_control.hpp"
 #include "paint/worker_pool.hpp"
 #include "spt/concat.hpp"
 #include "spt/reader.hpp"
 #include "spt/writer.hpp"
-#include "video/frame_source.hpp"
-#include "video/stop_signal.hpp"
-#include "video/video_encoder.hpp"
-#include "video/video_paint.hpp"
 
 namespace spt::cartoon {
 
@@ -67,7 +67,7 @@ Result<KeyFrame> paint_key(const cv::Mat& rgb, const paint::ImageView& model, co
     // The canvas before the residual stamps: the polygons as a decoder draws them.
     if (Status s = renderer.render(k.canvas, f.added); !s) return s.error();
     paint::PaintOptions po = opts.paint;
-    po.seed = video::frame_seed(opts.paint.seed, index);
+    po.seed = paint::frame_seed(opts.paint.seed, index);
     // As on inter frames (inter_frame.hpp). Key frame lambda times 1 / 8 / 16 / 32, with inter
     // frames' at 16, 12 frames at 36 dB: butterfly 78,028 / 62,804 / 61,559 / 59,860 bytes (its
     // key frame 55,475 -> 35,359 at 16), taffy 399,014 / 386,954 / 384,468 / 384,329, star 3,982
@@ -273,7 +273,7 @@ Status paint_sequence(const SequenceOptions& opts, SequenceReport& rep) {
             in.setup = &setup;
             in.motion = opts.motion;
             in.paint = opts.paint;
-            in.paint.seed = video::frame_seed(opts.paint.seed, index);
+            in.paint.seed = paint::frame_seed(opts.paint.seed, index);
             auto r = paint_inter_frame(in);
             if (!r) return r.error();
             if (opts.fill.search_tolerance && !r->unchanged && !r->patched) {

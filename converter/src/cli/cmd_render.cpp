@@ -15,7 +15,7 @@
 #include "spt/concat.hpp"
 #include "spt_import/shapes.hpp"
 #include "spt/spt.hpp"
-#include "video/ffmpeg_writer.hpp"
+#include "io/ffmpeg_writer.hpp"
 
 namespace spt::cli {
 
@@ -50,7 +50,7 @@ std::string lower_ext(const std::string& p) {
     return e;
 }
 
-// A preview video through FFmpeg (video/ffmpeg_writer.hpp), written inside a private folder
+// A preview video through FFmpeg (io/ffmpeg_writer.hpp), written inside a private folder
 // (io/private_output.hpp) and moved into place when complete.
 class VideoOut {
 public:

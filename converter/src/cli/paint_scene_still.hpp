@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli/paint_options.hpp"
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "paint/scene_paint.hpp"
 
 namespace spt::cli {

@@ -5,7 +5,7 @@
 
 #include "io/sequence.hpp"
 #include "plan/gray_frames.hpp"
-#include "video/ffmpeg_video.hpp"
+#include "frames/ffmpeg_video.hpp"
 
 namespace spt::plan {
 

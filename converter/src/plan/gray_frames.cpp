@@ -10,12 +10,12 @@
 #include <OpenImageIO/imageio.h>
 #include <opencv2/imgproc.hpp>
 
+#include "frames/frame_rate.hpp"
+#include "frames/frame_source.hpp"
+#include "frames/video_reader.hpp"
 #include "io/image_io.hpp"
 #include "io/sequence.hpp"
 #include "plan/ordered_prefetch.hpp"
-#include "video/frame_source.hpp"
-#include "video/video_paint.hpp"
-#include "video/video_reader.hpp"
 
 namespace spt::plan {
 

@@ -6,18 +6,18 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "frames/cut_detect.hpp"
+#include "frames/frame_rate.hpp"
 #include "io/sequence.hpp"
+#include "paint/frame_seed.hpp"
 #include "plan/cut_frame_stores.hpp"
 #include "plan/frame_span.hpp"
 #include "plan/gray_frames.hpp"
 #include "plan/sampled_cuts.hpp"
-#include "video/cut_detect.hpp"
-#include "video/video_encoder.hpp"
-#include "video/video_paint.hpp"
 
 namespace spt::plan {
 
-uint64_t shot_seed(uint64_t plan_seed, long first) { return video::frame_seed(plan_seed, uint32_t(first)); }
+uint64_t shot_seed(uint64_t plan_seed, long first) { return paint::frame_seed(plan_seed, uint32_t(first)); }
 
 Result<Plan> make_plan(const PlanOptions& o, io::Progress& progress, PlanStats* stats) {
     const auto t0 = std::chrono::steady_clock::now();

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "spt/result.hpp"
-#include "video/cut_detect.hpp"
+#include "frames/cut_detect.hpp"
 
 namespace spt::plan {
 

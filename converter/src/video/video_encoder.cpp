@@ -10,7 +10,6 @@
 #include "paint/orientation.hpp"
 #include "paint/rate_control.hpp"
 #include "spt/reader.hpp"
-#include "spt/replay.hpp"
 #include "video/stroke_cull.hpp"
 
 namespace spt::video {
@@ -29,12 +28,6 @@ cv::Mat wrap_rgb(uint32_t w, uint32_t h, const uint8_t* rgb) {
 }
 
 }  // namespace
-
-uint64_t frame_seed(uint64_t seed, uint32_t index) {
-    // SplitMix64's state after index + 1 steps from `seed` (mix64 adds the last step's
-    // increment): well mixed, and the same on every platform.
-    return replay::mix64(seed + 0x9E3779B97F4A7C15ull * uint64_t(index));
-}
 
 Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const VideoPaintOptions& opts, uint32_t width,
                                                            uint32_t height, Rational fps,

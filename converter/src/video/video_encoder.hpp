@@ -12,15 +12,16 @@
 
 #include <opencv2/core.hpp>
 
+#include "frames/cut_detect.hpp"
 #include "io/roi_file.hpp"
 #include "paint/change_mask.hpp"
+#include "paint/frame_seed.hpp"
 #include "paint/painter.hpp"
 #include "spt/render.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
 #include "spt/writer.hpp"
 #include "video/band_render.hpp"
-#include "video/cut_detect.hpp"
 #include "video/motion.hpp"
 #include "video/video_paint.hpp"
 
@@ -137,8 +138,6 @@ private:
     bool finished_ = false;
 };
 
-// The per-frame seed: a mix of the user's seed and the frame index, so that a frame's strokes
-// do not depend on how many random numbers earlier frames used.
-uint64_t frame_seed(uint64_t seed, uint32_t index);
+using paint::frame_seed;  // the per-frame seed (paint/frame_seed.hpp)
 
 }  // namespace spt::video

@@ -8,11 +8,11 @@
 #include <sstream>
 
 #include "io/sequence.hpp"
-#include "video/frame_source.hpp"
+#include "frames/frame_source.hpp"
 #include "io/roi_file.hpp"
-#include "video/stop_signal.hpp"
+#include "frames/stop_signal.hpp"
 #include "video/video_encoder.hpp"
-#include "video/video_scene.hpp"
+#include "frames/video_scene.hpp"
 #include "spt/utf8.hpp"
 #include "spt/concat.hpp"
 
@@ -51,11 +51,6 @@ Result<io::SceneImage> first_scene_file(const VideoPaintOptions& opts) {
     if (!all) return all.error();
     if (all->empty()) return make_error(Code::IoError, opts.input + ": no frames found");
     return io::read_scene_image(all->front().path, opts.scene_read);
-}
-
-bool frames_consecutive(const std::string& frames) {
-    Result<io::FrameRange> r = io::parse_frame_range(frames);
-    return r && (r->empty() || (r->spans.size() == 1 && r->step(0) == 1));
 }
 
 Status video_paint(const VideoPaintOptions& opts, io::Progress& progress, VideoPaintReport* report) {

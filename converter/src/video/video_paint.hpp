@@ -15,11 +15,12 @@
 #include <vector>
 
 #include "io/progress.hpp"
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "paint/painter.hpp"
 #include "paint/scene_paint.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
+#include "frames/frame_rate.hpp"  // parse_fps for `fps`
 
 namespace spt::video {
 
@@ -29,7 +30,7 @@ const char* flow_method_name(FlowMethod m);
 
 struct VideoPaintOptions {
     // Input: a sequence pattern ("shot.####.exr", "shot.%04d.png", "shot.1-120#.png"), a folder
-    // of frames, or a video file (anything FFmpeg's libraries decode: video/ffmpeg_video.hpp).
+    // of frames, or a video file (anything FFmpeg's libraries decode: frames/ffmpeg_video.hpp).
     std::string input;
     std::string output;               // the .spt file
     bool atomic_rename = true;        // false: `output` is a trial file, written in place
@@ -145,18 +146,9 @@ int run_video_paint(const VideoPaintOptions& opts, io::Progress& progress,
 Status video_paint(const VideoPaintOptions& opts, io::Progress& progress,
                    VideoPaintReport* report = nullptr);
 
-// True when a --frames value selects consecutive frame numbers (one span, step 1, or all):
-// then a painting's frame 0 may name its source frame (metadata source.first_frame).
-bool frames_consecutive(const std::string& frames);
-
 // Sets each of `entries` in `meta`: replacing the value of an entry of the same key, else
 // appended (a farm shot's seed and place over a painter's own metadata).
 void merge_metadata(std::vector<std::pair<std::string, std::string>>& meta,
                     const std::vector<std::pair<std::string, std::string>>& entries);
-
-// "24" -> 24/1, "30000/1001", "29.97" -> 30000/1001, "23.976" -> 24000/1001, "25.0" -> 25/1.
-Result<Rational> parse_fps(const std::string& text);
-// A container's floating-point rate as the rational it stands for (NTSC rates recognised).
-Rational fps_from_double(double fps);
 
 }  // namespace spt::video

@@ -2,7 +2,7 @@
 // Order of work: pick the channels (exr_layers), check the windows and limits, read the data
 // window in strips into the display window, replace NaN/inf, convert colour (color_config),
 // premultiply straight alpha, clamp negatives.
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -14,7 +14,7 @@
 #include <limits>
 
 #include "io/color_config.hpp"
-#include "io/exr_layers.hpp"
+#include "frames/exr_layers.hpp"
 
 namespace spt::io {
 

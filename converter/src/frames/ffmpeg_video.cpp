@@ -1,4 +1,4 @@
-#include "video/ffmpeg_video.hpp"
+#include "frames/ffmpeg_video.hpp"
 
 #include <algorithm>
 #include <cmath>

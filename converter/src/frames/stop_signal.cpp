@@ -1,4 +1,4 @@
-#include "video/stop_signal.hpp"
+#include "frames/stop_signal.hpp"
 
 #include <atomic>
 #include <csignal>

@@ -1,12 +1,12 @@
-#include "video/video_scene.hpp"
+#include "frames/video_scene.hpp"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <opencv2/imgproc.hpp>
 
 #include "io/color_config.hpp"
-#include "video/ffmpeg_video.hpp"
-#include "video/video_reader.hpp"
+#include "frames/ffmpeg_video.hpp"
+#include "frames/video_reader.hpp"
 
 namespace spt::video {
 

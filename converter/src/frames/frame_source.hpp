@@ -7,7 +7,7 @@
 #include <string>
 
 #include "io/image_io.hpp"
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "io/sequence.hpp"
 #include "spt/result.hpp"
 #include "spt/types.hpp"
@@ -40,10 +40,14 @@ public:
 };
 
 // Opens a sequence pattern or folder (spt::io::list_sequence) or a video file
-// (spt::io::is_video_file, video/ffmpeg_video.hpp). `frames` is "A-B" or empty. With `scene`,
+// (spt::io::is_video_file, frames/ffmpeg_video.hpp). `frames` is "A-B" or empty. With `scene`,
 // a sequence's frames are read with io::read_scene_image into SourceFrame::scene, and a video's
-// are converted the same way (video/video_scene.hpp).
+// are converted the same way (frames/video_scene.hpp).
 Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const std::string& frames,
                                                  bool skip_bad_frames, const io::SceneReadOptions* scene = nullptr);
+
+// True when a --frames value selects consecutive frame numbers (one span, step 1, or all):
+// then a painting's frame 0 may name its source frame (metadata source.first_frame).
+bool frames_consecutive(const std::string& frames);
 
 }  // namespace spt::video

@@ -7,7 +7,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "io/scene_image.hpp"
+#include "frames/scene_image.hpp"
 #include "spt/result.hpp"
 
 namespace spt::video {

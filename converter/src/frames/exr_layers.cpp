@@ -1,4 +1,4 @@
-#include "io/exr_layers.hpp"
+#include "frames/exr_layers.hpp"
 
 #include <strings.h>
 

@@ -1,4 +1,4 @@
-#include "video/cut_detect.hpp"
+#include "frames/cut_detect.hpp"
 
 #include <algorithm>
 #include <cmath>

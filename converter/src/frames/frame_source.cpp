@@ -1,4 +1,4 @@
-#include "video/frame_source.hpp"
+#include "frames/frame_source.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "video/video_paint.hpp"
-#include "video/video_reader.hpp"
-#include "video/video_scene.hpp"
+#include "frames/frame_rate.hpp"
+#include "frames/video_reader.hpp"
+#include "frames/video_scene.hpp"
 
 namespace spt::video {
 
@@ -167,6 +167,11 @@ Result<std::unique_ptr<FrameSource>> open_source(const std::string& input, const
     }
     return std::unique_ptr<FrameSource>(
         std::make_unique<SequenceSource>(input, std::move(numbers), std::move(by_number), skip_bad_frames, scene));
+}
+
+bool frames_consecutive(const std::string& frames) {
+    Result<io::FrameRange> r = io::parse_frame_range(frames);
+    return r && (r->empty() || (r->spans.size() == 1 && r->step(0) == 1));
 }
 
 }  // namespace spt::video

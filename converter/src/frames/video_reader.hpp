@@ -1,5 +1,5 @@
 // The frames of a video file that a --frames range selects, decoded by FFmpeg
-// (video/ffmpeg_video.hpp), in order, with the file's own frame numbers. A range that starts
+// (frames/ffmpeg_video.hpp), in order, with the file's own frame numbers. A range that starts
 // past frame 0, or skips a stretch, seeks to the key frame before the frame it wants. Shared by
 // the painter's video source (frame_source.cpp) and the plan's gray pass
 // (plan/gray_frames.cpp), which convert the frames each their own way.
@@ -15,7 +15,7 @@
 
 #include "io/sequence.hpp"
 #include "spt/result.hpp"
-#include "video/ffmpeg_video.hpp"
+#include "frames/ffmpeg_video.hpp"
 
 namespace spt::video {
 

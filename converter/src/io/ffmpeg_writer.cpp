@@ -1,4 +1,4 @@
-#include "video/ffmpeg_writer.hpp"
+#include "io/ffmpeg_writer.hpp"
 
 #include <cmath>
 #include <cstring>
