@@ -35,22 +35,27 @@ bool frames_sound(Reader& r, const std::string& in, const std::vector<size_t>& p
     return true;
 }
 
-// spt export IN.spt -o OUT.json --lottie: every frame read, then written as one Lottie file.
-int export_lottie_file(const std::string& in, const std::string& out, bool vector_only) {
-    auto reader = io::open_spt(in);
-    if (!reader) return fail(reader.error().message);
-    Reader& r = **reader;
+// Every frame of `r` checked as verify checks them, then read into `doc`: -1, or the exit code.
+int read_document(Reader& r, const std::string& in, import::Document& doc) {
     const size_t n = r.frames().size();
     std::vector<size_t> every(n);
     for (size_t i = 0; i < n; ++i) every[i] = i;
     if (int rc = 0; !frames_sound(r, in, every, true, rc)) return rc;
-    import::Document doc;
     doc.info = r.info();
     for (size_t i = 0; i < n; ++i) {
         auto f = r.read_frame(i);
         if (!f) return fail(io::frame_place(r, i) + ": " + io::describe_error(in, f.error()));
         doc.frames.push_back(std::move(*f));
     }
+    return -1;
+}
+
+// spt export IN.spt -o OUT.json --lottie: every frame read, then written as one Lottie file.
+int export_lottie_file(const std::string& in, const std::string& out, bool vector_only) {
+    auto reader = io::open_spt(in);
+    if (!reader) return fail(reader.error().message);
+    import::Document doc;
+    if (int rc = read_document(**reader, in, doc); rc >= 0) return rc;
     import::LottieExportStats st;
     auto text = import::export_lottie(doc, vector_only, st);
     if (!text) return fail(in + ": " + text.error().message);
@@ -126,16 +131,8 @@ int cmd_export(int argc, char** argv) {
     const size_t n = r.frames().size();
 
     if (json) {
-        std::vector<size_t> every(n);
-        for (size_t i = 0; i < n; ++i) every[i] = i;
-        if (int rc = 0; !frames_sound(r, in, every, true, rc)) return rc;
         import::Document doc;
-        doc.info = r.info();
-        for (size_t i = 0; i < n; ++i) {
-            auto f = r.read_frame(i);
-            if (!f) return fail(io::frame_place(r, i) + ": " + io::describe_error(in, f.error()));
-            doc.frames.push_back(std::move(*f));
-        }
+        if (int rc = read_document(r, in, doc); rc >= 0) return rc;
         // JSON carries UTF-8 only (a file from another writer may hold other bytes), and what
         // export writes, import must read back.
         for (const auto& [k, v] : doc.info.metadata)

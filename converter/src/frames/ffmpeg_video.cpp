@@ -15,15 +15,13 @@ extern "C" {
 
 #include <opencv2/core.hpp>
 
+#include "io/av_error.hpp"
+
 namespace spt::video {
 
 namespace {
 
-std::string av_text(int err) {
-    char buf[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(err, buf, sizeof buf);
-    return buf;
-}
+using io::av_text;
 
 // One opened file: the demuxer and its best video stream.
 struct Demux {

@@ -11,15 +11,13 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include "io/av_error.hpp"
+
 namespace spt::video {
 
 namespace {
 
-std::string av_text(int err) {
-    char buf[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(err, buf, sizeof buf);
-    return buf;
-}
+using io::av_text;
 
 }  // namespace
 
