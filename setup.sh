@@ -19,7 +19,8 @@ test_pkgs=(libgtest-dev libgmock-dev clang python3-numpy ccache
            emscripten node-acorn nodejs   # the web player (web/) and its Chromium test
            slurm-wlm munge iproute2     # the farm test's own Slurm cluster (tests/farm)
            libjxl-tools webp optipng potrace   # bench/ comparisons only
-           python3-openimageio)         # bench/color_bench.py (EXR sizes and errors)
+           python3-openimageio          # bench/color_bench.py (EXR sizes and errors)
+           linux-perf)                  # bench/profile_stages.py
 
 install_pkgs() {
   local missing=()
