@@ -79,7 +79,9 @@ public:
     }
     bool finish(std::string& err) {
         if (Status s = writer_.finish(); !s) {
-            err = s.error().message;
+            // A full disk is the commonest reason: said as the other outputs say it.
+            const Status space = out_.check_space();
+            err = space ? s.error().message : space.error().message + " (the video was not finished; nothing was written)";
             discard();
             return false;
         }
