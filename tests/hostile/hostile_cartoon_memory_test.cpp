@@ -14,15 +14,6 @@ using namespace spt_test;
 
 namespace {
 
-// Runs spt with `args` (output discarded); its exit code and peak resident size in KiB.
-std::pair<int, long> run_measured(const std::vector<std::string>& args) {
-    const pid_t pid = spt_test::spawn_spt_quietly(args);
-    int st = 0;
-    struct rusage ru {};
-    ::wait4(pid, &st, 0, &ru);
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, ru.ru_maxrss};
-}
-
 std::string one_colour(const TempDir& d, const std::string& name, uint32_t w, uint32_t h) {
     const std::vector<uint8_t> px(size_t(w) * h * 3, 90);
     const std::string path = d.file(name);

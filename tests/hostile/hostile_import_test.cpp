@@ -12,12 +12,9 @@ using namespace spt_test;
 namespace {
 
 // Runs spt with `args` (output discarded); its exit code and peak resident size in MiB.
-std::pair<int, long> run_measured(const std::vector<std::string>& args) {
-    const pid_t pid = spt_test::spawn_spt_quietly(args);
-    int st = 0;
-    struct rusage ru {};
-    ::wait4(pid, &st, 0, &ru);
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, ru.ru_maxrss / 1024};
+std::pair<int, long> run_measured_mib(const std::vector<std::string>& args) {
+    const auto [code, kib] = spt_test::run_measured(args);
+    return {code, kib / 1024};
 }
 
 }  // namespace
@@ -42,8 +39,8 @@ TEST(HostileImport, AListOverItsCountIsRefusedBeforeItIsHeld) {
     EXPECT_TRUE(failed_with(r, 1, {d.file("wide.json") + ":1:", "\"points\"[0] holds more than 16 items"}));
     // What it took beyond the command's own start-up (its libraries): a few MB, not the list.
     const std::string min = std::string(SPT_SOURCE_DIR) + "/tests/hostile/inputs/strokes_min.json";
-    const auto base = run_measured({"import", min, "-o", d.file("min.spt")});
-    const auto big = run_measured({"import", d.file("many.json"), "-o", d.file("o.spt")});
+    const auto base = run_measured_mib({"import", min, "-o", d.file("min.spt")});
+    const auto big = run_measured_mib({"import", d.file("many.json"), "-o", d.file("o.spt")});
     EXPECT_EQ(base.first, 0);
     EXPECT_EQ(big.first, 1);
     EXPECT_LT(big.second - base.second, 64) << "MiB beyond start-up";

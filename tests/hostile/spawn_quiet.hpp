@@ -3,10 +3,13 @@
 #pragma once
 
 #include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <sys/types.h>
 #include <unistd.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace spt_test {
@@ -25,6 +28,15 @@ inline pid_t spawn_spt_quietly(const std::vector<std::string>& args) {
         ::_exit(127);
     }
     return pid;
+}
+
+// Runs spt with `args` (output discarded); its exit code and peak resident size in KiB.
+inline std::pair<int, long> run_measured(const std::vector<std::string>& args) {
+    const pid_t pid = spawn_spt_quietly(args);
+    int st = 0;
+    struct rusage ru {};
+    ::wait4(pid, &st, 0, &ru);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, ru.ru_maxrss};
 }
 
 }  // namespace spt_test
