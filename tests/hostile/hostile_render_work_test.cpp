@@ -12,9 +12,8 @@ using namespace spt_test;
 
 namespace {
 
-// One key frame of `strokes` half-transparent affine ellipses covering a side x side canvas,
-// then 29 empty inter frames, range-coded (the file: about 15 KB).
-std::string still_file(const TempDir& d, const std::string& name, uint32_t side, int strokes) {
+// A range-coded side x side file of one ellipse template: `key`, then 29 empty inter frames.
+std::string key_then_empty(const TempDir& d, const std::string& name, uint32_t side, const spt::Frame& key) {
     spt::StreamInfo info;
     info.header.width = info.header.height = side;
     info.header.sets = {{4, 4}};
@@ -27,14 +26,6 @@ std::string still_file(const TempDir& d, const std::string& name, uint32_t side,
     const std::string path = d.file(name);
     auto w = spt::Writer::create(path, info, o);
     EXPECT_TRUE(w.ok());
-    spt::Frame key;
-    for (int i = 0; i < strokes; ++i) {
-        spt::AffineStroke a;
-        a.tx = a.ty = int32_t(side * 8);  // the centre, Q4
-        a.a = a.d = int32_t(side * 8);    // reaching every edge
-        a.color = {uint8_t(i * 37), uint8_t(i * 11), 200, 128};
-        key.added.push_back(spt::Stroke::make_affine(a));
-    }
     EXPECT_TRUE((*w)->append(key).ok());
     for (uint32_t i = 1; i < 30; ++i) {
         spt::Frame f;
@@ -44,6 +35,20 @@ std::string still_file(const TempDir& d, const std::string& name, uint32_t side,
     }
     EXPECT_TRUE((*w)->finish().ok());
     return path;
+}
+
+// One key frame of `strokes` half-transparent affine ellipses covering a side x side canvas,
+// then 29 empty inter frames, range-coded (the file: about 15 KB).
+std::string still_file(const TempDir& d, const std::string& name, uint32_t side, int strokes) {
+    spt::Frame key;
+    for (int i = 0; i < strokes; ++i) {
+        spt::AffineStroke a;
+        a.tx = a.ty = int32_t(side * 8);  // the centre, Q4
+        a.a = a.d = int32_t(side * 8);    // reaching every edge
+        a.color = {uint8_t(i * 37), uint8_t(i * 11), 200, 128};
+        key.added.push_back(spt::Stroke::make_affine(a));
+    }
+    return key_then_empty(d, name, side, key);
 }
 
 // run_spt, timed.
@@ -98,18 +103,6 @@ namespace {
 // One key frame of `n` canvas-tall quadrilaterals on a 1024x1024 canvas sampled 16 x 16 (2 edges
 // x 1024 rows x 256 samples: 2^19 units of polygon work each), then 29 empty inter frames.
 std::string polygon_file(const TempDir& d, const std::string& name, int n, bool curves = false) {
-    spt::StreamInfo info;
-    info.header.width = info.header.height = 1024;
-    info.header.sets = {{4, 4}};
-    info.header.orientations = spt::default_orientations(1);
-    info.header.fps = {24, 1};
-    info.templates.resize(1);
-    info.templates[0].kind = spt::TemplateKind::Ellipse;
-    spt::WriterOptions o;
-    o.coding = spt::Coding::Range;
-    const std::string path = d.file(name);
-    auto w = spt::Writer::create(path, info, o);
-    EXPECT_TRUE(w.ok());
     spt::Frame key;
     for (int i = 0; i < n && curves; ++i) {
         // 63 segments from corner to corner: each one's box is the canvas (2^20 units).
@@ -126,15 +119,7 @@ std::string polygon_file(const TempDir& d, const std::string& name, int n, bool 
         p.points = {{x, 0}, {x + 16 * 20, 0}, {x + 16 * 20, s}, {x, s}};
         key.added.push_back(spt::Stroke::make_polygon(p));
     }
-    EXPECT_TRUE((*w)->append(key).ok());
-    for (uint32_t i = 1; i < 30; ++i) {
-        spt::Frame f;
-        f.index = i;
-        f.type = spt::FrameType::Inter;
-        EXPECT_TRUE((*w)->append(f).ok());
-    }
-    EXPECT_TRUE((*w)->finish().ok());
-    return path;
+    return key_then_empty(d, name, 1024, key);
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 // Storing option values through the table's rows, and the checks between options.
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 
 #include "io/color_config.hpp"
 #include "io/roi_file.hpp"
@@ -15,16 +13,6 @@ namespace {
 
 bool given_in(const std::vector<std::string>& given, const char* name) {
     return std::find(given.begin(), given.end(), name) != given.end();
-}
-
-// A bound as people write it: 0.000001, not 1e-06.
-std::string plain(double v) {
-    char buf[64];
-    for (int prec = 0; prec <= 17; ++prec) {
-        std::snprintf(buf, sizeof buf, "%.*f", prec, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    return buf;
 }
 
 std::string range_text(const OptionRow& r) {

@@ -113,14 +113,22 @@ bool parse_target_bytes(const std::string& s, uint64_t& bytes, bool& per_second)
     return true;
 }
 
-std::string exact(double v) {
-    char buf[40];
-    for (int prec = 6; prec <= 17; ++prec) {
-        std::snprintf(buf, sizeof buf, "%.*g", prec, v);
+namespace {
+
+// The fewest digits (from `first`) in `format` ("%.*g" or "%.*f") that strtod reads back to v.
+std::string shortest(double v, const char* format, int first) {
+    char buf[64];
+    for (int prec = first; prec <= 17; ++prec) {
+        std::snprintf(buf, sizeof buf, format, prec, v);
         if (std::strtod(buf, nullptr) == v) break;
     }
     return buf;
 }
+
+}  // namespace
+
+std::string exact(double v) { return shortest(v, "%.*g", 6); }
+std::string plain(double v) { return shortest(v, "%.*f", 0); }
 
 std::string set_sizes_text(const std::vector<StrokeSet>& sizes) {
     std::string s;

@@ -22,6 +22,7 @@ bool parse_target_bytes(const std::string& s, uint64_t& bytes, bool& per_second)
 
 std::string byte_size_text(uint64_t bytes);  // as parse_byte_size reads it: 8G, 512M, 1000
 std::string exact(double v);  // the shortest text strtod reads back to v
+std::string plain(double v);  // the same without an exponent, as people write bounds: 0.000001
 std::string set_sizes_text(const std::vector<StrokeSet>& sizes);
 std::string rect_text(const paint::Rect& r);
 std::string rgb_text(const Rgb8& c);
